@@ -1,0 +1,63 @@
+// The real-time side: evaluates the FIR chain's output for the queued blocks, one servo tick at a
+// time. No allocation after construction, no locks, no I/O, no exceptions; per tick it costs
+// O(stages) per moving block plus O(axes) per moving block, whatever the filter lengths.
+//
+// Drift: there are no running sums. A block whose filter window has passed is retired by setting
+// the rest position to its programmed end point, so at rest the output equals the command
+// exactly, after any number of ticks.
+#pragma once
+
+#include <firtp/fir_chain.hpp>
+#include <firtp/types.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace firtp {
+
+// A block as the planner scheduled it.
+struct PlannedBlock {
+    AxisVector delta = AxisVector::Zero();  // end - start
+    AxisVector end = AxisVector::Zero();    // programmed end point, exact
+    double tv = 0.0;                        // velocity pulse width Tv = L / F (Eq. 5)
+    std::int64_t start_tick = 0;            // pulse starts at start_tick * period + start_offset
+    double start_offset = 0.0;              // in [0, period)
+    std::int64_t line = 0;
+    MotionType type = MotionType::feed;
+};
+
+class Interpolator {
+public:
+    Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start);
+
+    // Non-real-time setup: rest at `position`, queue empty, clock kept.
+    void reset(const AxisVector& position);
+
+    bool push(const PlannedBlock& block);  // false when full; nothing changes then
+    void tick(AxisState& out);             // state at now_tick() * period, then one period on
+
+    std::int64_t now_tick() const { return now_tick_; }
+    double period() const { return period_; }
+    bool idle() const { return count_ == 0; }
+    std::size_t depth() const { return count_; }  // blocks not yet finished
+    std::size_t free() const { return ring_.size() - count_; }
+    const AxisVector& rest_position() const { return base_; }
+    std::int64_t current_line() const { return line_; }
+
+private:
+    double local_time(const PlannedBlock& b) const {
+        return static_cast<double>(now_tick_ - b.start_tick) * period_ - b.start_offset;
+    }
+
+    const FirChain* chain_;
+    double period_;
+    std::vector<PlannedBlock> ring_;  // sized once
+    std::size_t head_ = 0;
+    std::size_t count_ = 0;
+    AxisVector base_;  // end point of the last retired block
+    std::int64_t now_tick_ = 0;
+    std::int64_t line_ = 0;
+};
+
+}  // namespace firtp

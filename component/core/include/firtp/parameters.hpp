@@ -1,0 +1,58 @@
+// Settings of the FIR chain and the planner (Sencer et al. 2015).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <span>
+
+namespace firtp {
+
+constexpr int max_stages = 4;
+
+// Moving-average time constants T1 >= T2 >= ... (Eq. 1-2), seconds.
+struct FilterTimes {
+    int stages = 2;
+    std::array<double, max_stages> T{0.0, 0.0, 0.0, 0.0};
+
+    double delay() const;  // Td = T1 + ... + Tn (Eq. 6)
+};
+
+// What the tolerance epsilon bounds at a corner.
+enum class ToleranceMeaning {
+    corner_point,  // closest approach of the tool to the programmed corner point (the paper's)
+    contour,       // largest distance from the programmed path
+};
+
+struct PlannerParameters {
+    FilterTimes filters;
+    double period = 0.001;  // servo period, s
+    ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;
+    double fixed_overlap = -1.0;        // Tk forced at every blended corner (s); < 0: from the tolerance
+    std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
+};
+
+struct AxisLimits {
+    double max_velocity = 0.0;      // units/s
+    double max_acceleration = 0.0;  // units/s^2
+    double max_jerk = 0.0;          // units/s^3, 0 = not limited
+};
+
+// Machine limits per axis (only the first `axes` entries are used).
+struct MachineLimits {
+    int axes = 3;
+    std::array<AxisLimits, 9> axis{};
+    double max_linear_velocity = 0.0;  // [TRAJ]MAX_LINEAR_VELOCITY, 0 = not limited
+};
+
+// T1 from velocity/acceleration, T2 from acceleration/jerk (Eq. 4: a = v / T1, j = a / T2),
+// then stage i raised to the next multiple k / f_i of the i-th structural mode (Eq. 10).
+// Explicit times (> 0 in `given`) win over derived ones. Throws std::invalid_argument when a
+// stage can be neither given nor derived.
+FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
+                                     std::span<const double> given,
+                                     std::span<const double> mode_frequencies_hz);
+
+// Checks T1 >= ... >= Tn > 0, 1 <= n <= 4, finite; returns an empty string or the reason.
+const char* validate(const FilterTimes& filters);
+
+}  // namespace firtp

@@ -1,0 +1,67 @@
+// Accepts blocks one at a time and schedules their velocity pulses: each new block starts
+// Td - Tk after the previous pulse ended (Eq. 11), Tk chosen so the corner stays within the
+// block's tolerance. Causal: a block is scheduled when it arrives, with no look-ahead, so a
+// stream can start moving at once; a block that arrives late only shortens Tk.
+//
+// Neighbouring corners never share a filter window: Tk_(i-1) + Tk_i <= Tv_i + Td (notes), kept by
+// giving each corner at most what the previous corner left of the incoming block, and at most
+// half of the outgoing block. Collinear blocks of equal feed join into one pulse (Tk = Td) when
+// the previous corner's overlap lies inside the run, so the join cannot change that corner.
+#pragma once
+
+#include <firtp/corner.hpp>
+#include <firtp/fir_chain.hpp>
+#include <firtp/interpolator.hpp>
+#include <firtp/parameters.hpp>
+#include <firtp/types.hpp>
+
+namespace firtp {
+
+// What the planner decided at the junction between two blocks.
+struct CornerReport {
+    std::int64_t line = 0;                  // line of the block that ends at the corner
+    AxisVector point = AxisVector::Zero();  // programmed corner point
+    double beta = 0.0;                      // change of direction, rad
+    double tk = 0.0;                        // overlap used, s
+    double tk_tolerance = 0.0;              // overlap the tolerance alone allows, s
+    double epsilon = 0.0;                   // tolerance asked for (+inf: none)
+    double predicted_error = 0.0;           // continuous corner error at tk (per the tolerance meaning)
+    bool exact_stop = false;
+};
+
+class Planner {
+public:
+    Planner(const PlannerParameters& parameters, const FirChain& chain, const AxisVector& start);
+
+    // Validates, plans and queues one block. Result::queue_full leaves everything as it was.
+    // A zero-length block is accepted and skipped. When the block forms a corner with the
+    // previous one, *corner (if given) is filled and *has_corner set.
+    Result add(const Block& block, Interpolator& out, CornerReport* corner = nullptr,
+               bool* has_corner = nullptr);
+
+    // After the interpolator was reset: plan from rest at `position`.
+    void reset(const AxisVector& position);
+
+    const AxisVector& goal() const { return last_.end; }
+
+private:
+    struct Last {
+        bool moving = false;                    // a block exists to blend with
+        AxisVector end = AxisVector::Zero();
+        AxisVector run_delta = AxisVector::Zero();  // incoming pulse: this block and collinear ones joined to it
+        double run_tv = 0.0;
+        double tk_in = 0.0;                     // overlap at the corner where the run started
+        double feed = 0.0;
+        Termination termination = Termination::exact_stop;
+        double tolerance = 0.0;
+        std::int64_t line = 0;
+        std::int64_t end_tick = 0;              // pulse end, as tick + offset
+        double end_offset = 0.0;
+    };
+
+    PlannerParameters parameters_;
+    const FirChain* chain_;
+    Last last_;
+};
+
+}  // namespace firtp

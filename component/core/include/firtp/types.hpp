@@ -1,0 +1,48 @@
+// Plain data that flows through the planner: blocks in, axis states out.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+
+namespace firtp {
+
+// X Y Z A B C U V W, in this order everywhere (LinuxCNC's EmcPose order).
+constexpr int max_axes = 9;
+constexpr std::array<char, max_axes> axis_letters{'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'};
+using AxisVector = Eigen::Matrix<double, max_axes, 1>;
+
+// Values match LinuxCNC's EMC_MOTION_TYPE_* so they pass through unchanged.
+enum class MotionType : std::uint8_t { traverse = 1, feed = 2 };
+
+// How the block ends: G61/G61.1 stop exactly, G64 blends within the block's tolerance.
+enum class Termination : std::uint8_t { exact_stop, blend };
+
+// One commanded straight move, in machine units (mm, degrees) and seconds.
+struct Block {
+    AxisVector target = AxisVector::Zero();  // absolute end point
+    double feed = 0.0;                       // path speed F, units/s (> 0)
+    Termination termination = Termination::blend;
+    double tolerance = 0.0;                  // epsilon at the corner that ends this block, units (> 0 when blending)
+    MotionType type = MotionType::feed;
+    std::int64_t line = 0;                   // source line, reported back while the block executes
+};
+
+// Commanded state of every axis at one servo tick.
+struct AxisState {
+    double time = 0.0;  // seconds since the planner started
+    AxisVector position = AxisVector::Zero();
+    AxisVector velocity = AxisVector::Zero();
+    AxisVector acceleration = AxisVector::Zero();
+    AxisVector jerk = AxisVector::Zero();
+    std::int64_t line = 0;  // line of the newest block that has started moving (0 when idle)
+};
+
+enum class Result : int {
+    ok = 0,
+    queue_full = 1,     // try again after some ticks
+    invalid_block = -1, // NaN, infinite or non-positive feed, bad tolerance
+};
+
+}  // namespace firtp

@@ -1,0 +1,127 @@
+#include <firtp/corner.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace firtp {
+
+namespace {
+
+constexpr int grid_points = 32;
+constexpr int refine_steps = 40;
+constexpr double golden = 0.6180339887498949;
+
+// Extremum of f over [a, b]: coarse grid, then golden section around the best grid point.
+// sign = +1 finds the minimum, -1 the maximum. Returns {argument, value}.
+template <class F>
+std::pair<double, double> extremum(F&& f, double a, double b, double sign) {
+    if (b <= a) return {a, f(a)};
+    const double step = (b - a) / grid_points;
+    double best_t = a, best = sign * f(a);
+    for (int i = 1; i <= grid_points; ++i) {
+        const double t = a + step * i;
+        if (const double v = sign * f(t); v < best) best = v, best_t = t;
+    }
+    double lo = std::max(a, best_t - step), hi = std::min(b, best_t + step);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+    double f1 = sign * f(x1), f2 = sign * f(x2);
+    for (int i = 0; i < refine_steps; ++i) {
+        if (f1 < f2) {
+            hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = sign * f(x1);
+        } else {
+            lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = sign * f(x2);
+        }
+    }
+    if (f1 < best) best = f1, best_t = x1;
+    if (f2 < best) best = f2, best_t = x2;
+    return {best_t, sign * best};
+}
+
+double distance_to_segment(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
+    const AxisVector ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double u = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (p - a - u * ab).norm();
+}
+
+// Largest Tk in [0, Tk_max] with error(Tk) <= epsilon, keeping error(lo) <= epsilon throughout.
+template <class E>
+double bisect_overlap(E&& error, double epsilon, double Tk_max) {
+    if (error(Tk_max) <= epsilon) return Tk_max;
+    double lo = 0.0, hi = Tk_max;
+    for (int i = 0; i < 60 && hi - lo > 1e-12 * Tk_max; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (error(mid) <= epsilon ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+}  // namespace
+
+AxisVector CornerModel::offset(double t, double Tk) const {
+    const double s_in = chain->pulse(t + in_tv, in_tv).position;
+    const double s_out = chain->pulse(t - (chain->delay() - Tk), out_tv).position;
+    return out_delta * s_out - in_delta * (1.0 - s_in);
+}
+
+double CornerModel::corner_error(double Tk) const {
+    const double td = chain->delay();
+    return extremum([&](double t) { return offset(t, Tk).norm(); }, td - Tk, td, 1.0).second;
+}
+
+double CornerModel::sampled_corner_error(double Tk, double period) const {
+    const double td = chain->delay();
+    const double t = extremum([&](double x) { return offset(x, Tk).norm(); }, td - Tk, td, 1.0).first;
+    const AxisVector corner = AxisVector::Zero();
+    double worst = 0.0;
+    for (double phase : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        const double a = t - phase * period;
+        worst = std::max(worst, distance_to_segment(corner, offset(a, Tk), offset(a + period, Tk)));
+    }
+    return worst;
+}
+
+double CornerModel::contour_error(double Tk) const {
+    const double td = chain->delay();
+    const AxisVector origin = AxisVector::Zero();
+    const AxisVector from = -in_delta;
+    auto distance = [&](double t) {
+        const AxisVector p = offset(t, Tk);
+        return std::min(distance_to_segment(p, from, origin), distance_to_segment(p, origin, out_delta));
+    };
+    return extremum(distance, td - Tk, td, -1.0).second;
+}
+
+double turn_angle(const AxisVector& in_delta, const AxisVector& out_delta) {
+    const AxisVector a = in_delta.normalized(), b = out_delta.normalized();
+    return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+}
+
+double solve_overlap(const CornerModel& corner, double epsilon, ToleranceMeaning meaning, double period,
+                     double Tk_max) {
+    if (Tk_max <= 0.0) return 0.0;
+    if (std::isinf(epsilon)) return Tk_max;
+    const double f_in = corner.in_delta.norm() / corner.in_tv;
+    const double f_out = corner.out_delta.norm() / corner.out_tv;
+    const double short_pulse = std::min(corner.in_tv, corner.out_tv);
+    if (meaning == ToleranceMeaning::corner_point && std::abs(f_in - f_out) <= 1e-12 * f_in) {
+        // Closest approach at the middle of the overlap, 2 F s R(Tk / 2) (Eq. 13/14 for any
+        // chain). Worst sampling phase: samples half a period either side, whose chord lies
+        // F s (R(Tk/2 - Ts/2) + R(Tk/2 + Ts/2)) from the corner.
+        const double s = std::sin(0.5 * turn_angle(corner.in_delta, corner.out_delta));
+        const FirChain& chain = *corner.chain;
+        auto error = [&](double Tk) {
+            return f_in * s * (chain.position(0.5 * (Tk - period)) + chain.position(0.5 * (Tk + period)));
+        };
+        // The closed form holds while neither pulse ends inside the overlap.
+        const double cap = std::min(Tk_max, short_pulse);
+        const double tk = bisect_overlap(error, epsilon, cap);
+        if (tk < cap || cap == Tk_max) return tk;
+    }
+    if (meaning == ToleranceMeaning::corner_point)
+        return bisect_overlap([&](double Tk) { return corner.sampled_corner_error(Tk, period); }, epsilon, Tk_max);
+    return bisect_overlap([&](double Tk) { return corner.contour_error(Tk); }, epsilon, Tk_max);
+}
+
+}  // namespace firtp

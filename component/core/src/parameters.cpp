@@ -1,0 +1,67 @@
+#include <firtp/parameters.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace firtp {
+
+double FilterTimes::delay() const {
+    double td = 0.0;
+    for (int i = 0; i < stages; ++i) td += T[i];
+    return td;
+}
+
+const char* validate(const FilterTimes& filters) {
+    if (filters.stages < 1 || filters.stages > max_stages) return "the chain needs 1 to 4 stages";
+    for (int i = 0; i < filters.stages; ++i) {
+        if (!std::isfinite(filters.T[i]) || filters.T[i] <= 0.0) return "filter times must be positive and finite";
+        if (i > 0 && filters.T[i] > filters.T[i - 1]) return "filter times must not increase (T1 >= T2 >= ...)";
+    }
+    return "";
+}
+
+namespace {
+
+// Largest ratio over the axes in use, 0 when no axis has both values.
+double worst_ratio(const MachineLimits& limits, double AxisLimits::*num, double AxisLimits::*den) {
+    double worst = 0.0;
+    for (int a = 0; a < limits.axes; ++a) {
+        const AxisLimits& l = limits.axis[a];
+        if (l.*num > 0.0 && l.*den > 0.0) worst = std::max(worst, l.*num / l.*den);
+    }
+    return worst;
+}
+
+}  // namespace
+
+FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
+                                     std::span<const double> given,
+                                     std::span<const double> mode_frequencies_hz) {
+    if (stages < 1 || stages > max_stages) throw std::invalid_argument("the chain needs 1 to 4 stages");
+    FilterTimes f;
+    f.stages = stages;
+    for (int i = 0; i < stages; ++i) {
+        double t = i < static_cast<int>(given.size()) ? given[i] : 0.0;
+        if (t <= 0.0 && i == 0) t = worst_ratio(limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
+        if (t <= 0.0 && i == 1) t = worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
+        if (i < static_cast<int>(mode_frequencies_hz.size())) {
+            const double f_mode = mode_frequencies_hz[i];
+            if (!(f_mode > 0.0) || !std::isfinite(f_mode))
+                throw std::invalid_argument("mode frequencies must be positive");
+            // Eq. 10: T_i = k / f, the smallest k >= 1 that keeps T_i at least what the limits ask.
+            const double k = std::max(1.0, std::ceil(t * f_mode - 1e-9));
+            t = k / f_mode;
+        }
+        if (!(t > 0.0) || !std::isfinite(t))
+            throw std::invalid_argument("T" + std::to_string(i + 1) +
+                                        " is neither given nor derivable from the axis limits or a mode");
+        f.T[i] = t;
+    }
+    std::sort(f.T.begin(), f.T.begin() + stages, std::greater<>());
+    return f;
+}
+
+}  // namespace firtp
