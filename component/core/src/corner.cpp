@@ -8,9 +8,10 @@ namespace firtp {
 
 namespace {
 
-constexpr int grid_points = 32;
-constexpr int refine_steps = 40;
+constexpr int grid_points = 24;
+constexpr int refine_steps = 30;  // brackets shrink to 0.618^30 = 5e-7 of a grid step
 constexpr double golden = 0.6180339887498949;
+constexpr double overlap_resolution = 1e-7;  // s; Tk is rounded down to this
 
 // Extremum of f over [a, b]: coarse grid, then golden section around the best grid point.
 // sign = +1 finds the minimum, -1 the maximum. Returns {argument, value}.
@@ -46,11 +47,12 @@ double distance_to_segment(const AxisVector& p, const AxisVector& a, const AxisV
 }
 
 // Largest Tk in [0, Tk_max] with error(Tk) <= epsilon, keeping error(lo) <= epsilon throughout.
+// Tk = 0 always holds: the planner then rests on the corner for at least one sample.
 template <class E>
 double bisect_overlap(E&& error, double epsilon, double Tk_max) {
     if (error(Tk_max) <= epsilon) return Tk_max;
     double lo = 0.0, hi = Tk_max;
-    for (int i = 0; i < 60 && hi - lo > 1e-12 * Tk_max; ++i) {
+    for (int i = 0; i < 60 && hi - lo > overlap_resolution; ++i) {
         const double mid = 0.5 * (lo + hi);
         (error(mid) <= epsilon ? lo : hi) = mid;
     }
@@ -74,12 +76,11 @@ double CornerModel::sampled_corner_error(double Tk, double period) const {
     const double td = chain->delay();
     const double t = extremum([&](double x) { return offset(x, Tk).norm(); }, td - Tk, td, 1.0).first;
     const AxisVector corner = AxisVector::Zero();
-    double worst = 0.0;
-    for (double phase : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    auto chord = [&](double phase) {
         const double a = t - phase * period;
-        worst = std::max(worst, distance_to_segment(corner, offset(a, Tk), offset(a + period, Tk)));
-    }
-    return worst;
+        return distance_to_segment(corner, offset(a, Tk), offset(a + period, Tk));
+    };
+    return extremum(chord, 0.0, 1.0, -1.0).second;
 }
 
 double CornerModel::contour_error(double Tk) const {

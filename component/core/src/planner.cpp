@@ -8,7 +8,6 @@ namespace firtp {
 
 namespace {
 
-constexpr double min_length = 1e-9;     // shorter blocks are skipped (units)
 constexpr double collinear_angle = 1e-9;  // rad: joined into one pulse below this turn
 
 bool finite(const AxisVector& v) { return v.allFinite(); }
@@ -48,7 +47,7 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
 
     const AxisVector delta = block.target - last_.end;
     const double length = delta.norm();
-    if (length < min_length) return Result::ok;
+    if (length < min_block_length) return Result::ok;
     if (out.free() == 0) return Result::queue_full;
 
     const double period = parameters_.period;
@@ -86,26 +85,36 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
         report.exact_stop = last_.termination == Termination::exact_stop;
         // Equal feed, straight on, and the previous corner's overlap inside the last block: one pulse.
         joined = !report.exact_stop && beta < collinear_angle &&
-                 std::abs(block.feed - last_.feed) <= 1e-12 * last_.feed && last_.run_tv >= last_.tk_in;
+                 std::abs(block.feed - last_.feed) <= 1e-12 * last_.feed && last_.run_tv >= last_.tk_in + period;
         if (joined) {
             tk = td;
         } else if (!report.exact_stop) {
             // Clamp (paper notes): this corner gets what the previous one left of the incoming
-            // pulse, and at most half of the outgoing one, so no window holds three blocks.
-            const double tk_max = std::clamp(std::min({td, last_.run_tv + td - last_.tk_in, 0.5 * (tv + td)}), 0.0, td);
-            CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
+            // pulse, and at most half of the outgoing one, so no window holds three blocks. One
+            // servo period more stays free: the sampled error bound looks that far past a window.
+            const double tk_max = std::clamp(
+                std::min({td, last_.run_tv + td - last_.tk_in - period, 0.5 * (tv + td - period)}), 0.0, td);
+            const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
             if (parameters_.fixed_overlap >= 0.0) {
                 tk = std::min(parameters_.fixed_overlap, tk_max);
                 report.tk_tolerance = parameters_.fixed_overlap;
             } else {
                 tk = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, tk_max);
-                report.tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
+                report.tk_tolerance = tk;
+                if (corner && tk == tk_max && tk_max < td)  // report-only: what the clamp took away
+                    report.tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
             }
         }
         // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
         planned.start_tick = last_.end_tick;
         planned.start_offset = last_.end_offset + (td - tk);
         normalise(planned.start_tick, planned.start_offset, period);
+        if (tk == 0.0 && planned.start_offset > 0.0) {
+            // A stop: rest until the next servo sample so that one sample lands exactly on the
+            // corner; otherwise the straight line between samples would cut it.
+            ++planned.start_tick;
+            planned.start_offset = 0.0;
+        }
         if (planned.start_tick < now) {
             planned.start_tick = now;
             planned.start_offset = 0.0;
@@ -113,8 +122,8 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
             joined = joined && tk == td;
         }
         report.tk = tk;
-        if (!joined) {
-            CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
+        if (corner && !joined) {  // report-only
+            const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
             report.predicted_error = parameters_.tolerance_meaning == ToleranceMeaning::contour
                                          ? model.contour_error(tk)
                                          : model.corner_error(tk);

@@ -27,7 +27,8 @@ struct CornerModel {
     double contour_error(double Tk) const;
 };
 
-// Largest Tk in [0, Tk_max] whose error (per `meaning`, sampled at `period`) is <= epsilon.
+// Largest Tk in [0, Tk_max] whose error (per `meaning`, sampled at `period`) is <= epsilon, or 0
+// (a stop, which the planner puts on a servo sample so the tool rests on the corner).
 // Equal feeds with both pulses at least Tk_max long use the closed form; anything else is solved
 // on the model. The returned Tk always satisfies the bound; epsilon = +inf gives Tk_max.
 double solve_overlap(const CornerModel& corner, double epsilon, ToleranceMeaning meaning,

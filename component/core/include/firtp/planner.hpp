@@ -3,10 +3,12 @@
 // block's tolerance. Causal: a block is scheduled when it arrives, with no look-ahead, so a
 // stream can start moving at once; a block that arrives late only shortens Tk.
 //
-// Neighbouring corners never share a filter window: Tk_(i-1) + Tk_i <= Tv_i + Td (notes), kept by
-// giving each corner at most what the previous corner left of the incoming block, and at most
-// half of the outgoing block. Collinear blocks of equal feed join into one pulse (Tk = Td) when
-// the previous corner's overlap lies inside the run, so the join cannot change that corner.
+// Neighbouring corners never share a filter window: Tk_(i-1) + Tk_i <= Tv_i + Td - period (notes,
+// with one servo period to spare for the sampled error bound), kept by giving each corner at most
+// what the previous corner left of the incoming block, and at most half of the outgoing block. Collinear blocks of equal feed join into one pulse (Tk = Td) when
+// the previous corner's overlap lies inside the run, so the join cannot change that corner. A
+// junction where the path goes straight on is not a corner: its tolerance bounds nothing, and
+// the path there stays within the neighbouring corners' tolerances.
 #pragma once
 
 #include <firtp/corner.hpp>

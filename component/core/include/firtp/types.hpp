@@ -13,6 +13,9 @@ constexpr int max_axes = 9;
 constexpr std::array<char, max_axes> axis_letters{'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'};
 using AxisVector = Eigen::Matrix<double, max_axes, 1>;
 
+// Blocks shorter than this (units) are skipped: they have no direction to plan with.
+constexpr double min_block_length = 1e-9;
+
 // Values match LinuxCNC's EMC_MOTION_TYPE_* so they pass through unchanged.
 enum class MotionType : std::uint8_t { traverse = 1, feed = 2 };
 
