@@ -1,0 +1,17 @@
+// Errors the firtp command reports on stderr as "firtp: <what>".
+#pragma once
+
+#include <stdexcept>
+
+namespace firtp::cli {
+
+constexpr int exit_input_error = 1;  // bad program, INI, I/O, missing tool
+constexpr int exit_usage_error = 2;  // bad command line
+
+// The command line is wrong: unknown flag, bad flag value, missing argument.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace firtp::cli

@@ -1,0 +1,74 @@
+#include "json_report.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace firtp::cli {
+namespace {
+
+using nlohmann::json;
+
+json xyz(const AxisVector& v) { return json::array({v[0], v[1], v[2]}); }
+
+json finite_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+const char* meaning_name(ToleranceMeaning meaning) {
+    return meaning == ToleranceMeaning::contour ? "contour" : "corner";
+}
+
+json machine_json(const PlanRun& run) {
+    const FilterTimes& f = run.parameters.filters;
+    json times = json::array();
+    for (int i = 0; i < f.stages; ++i) times.push_back(f.T[static_cast<std::size_t>(i)]);
+    return {{"period_s", run.parameters.period},
+            {"stages", f.stages},
+            {"T_s", times},
+            {"delay_s", f.delay()},
+            {"default_tolerance_mm", run.machine.default_tolerance},
+            {"tolerance_meaning", meaning_name(run.parameters.tolerance_meaning)}};
+}
+
+json corners_json(const PlanRun& run) {
+    json corners = json::array();
+    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) {
+        const CornerReport& c = run.trajectory.corners[i];
+        const auto& measured = run.corner_errors[i];
+        corners.push_back({{"line", c.line},
+                           {"point", xyz(c.point)},
+                           {"beta_deg", c.beta * 180.0 / std::numbers::pi},
+                           {"tk_s", c.tk},
+                           {"tk_tolerance_s", c.tk_tolerance},
+                           {"epsilon_mm", finite_or_null(c.epsilon)},
+                           {"predicted_error_mm", c.predicted_error},
+                           {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
+                           {"exact_stop", c.exact_stop}});
+    }
+    return corners;
+}
+
+json measured_json(const PlanRun& run) {
+    const Measured& m = run.measured;
+    return {{"max_corner_error_mm", m.max_corner_error},
+            {"max_contour_error_mm", m.max_contour_error},
+            {"max_path_speed_mm_s", m.max_path_speed},
+            {"max_axis_velocity", xyz(m.max_velocity)},
+            {"max_axis_acceleration", xyz(m.max_acceleration)},
+            {"max_axis_jerk", xyz(m.max_jerk)},
+            {"end_position", xyz(m.end_position)},
+            {"end_error_mm", (m.end_position - run.points.back()).norm()},
+            {"finite", m.finite}};
+}
+
+}  // namespace
+
+nlohmann::json json_report(const PlanRun& run, const std::string& program_name) {
+    return {{"program", program_name},
+            {"machine", machine_json(run)},
+            {"blocks", run.points.size() - 1},
+            {"cycle_time_s", run.trajectory.cycle_time},
+            {"closed_form_cycle_time_s", run.closed_form_cycle_time},
+            {"corners", corners_json(run)},
+            {"measured", measured_json(run)}};
+}
+
+}  // namespace firtp::cli

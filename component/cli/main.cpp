@@ -1,0 +1,50 @@
+// firtp: command-line front end of the FIR-filter trajectory planner. Dispatches subcommands and
+// turns errors into "firtp: <what>" on stderr with exit status 1 (input) or 2 (usage).
+#include "cli_errors.hpp"
+#include "plan_command.hpp"
+
+#include <exception>
+#include <span>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* usage =
+    "Usage: firtp COMMAND [options]\n\n"
+    "FIR-filter kinematic corner smoothing (Sencer, Ishizaki, Shamoto, CIRP Annals 2015).\n\n"
+    "Commands:\n"
+    "  plan PROGRAM.ngc   plan a G-code program; print a summary, optionally write\n"
+    "                     --csv FILE, --json FILE and --plot FILE.png\n\n"
+    "Options:\n"
+    "  -h, --help         show this help and exit\n\n"
+    "Run 'firtp plan --help' for the options of plan (--ini, --t1, --t2, --tolerance, --period,\n"
+    "--tolerance-meaning, --csv, --json, --plot).\n";
+
+int dispatch(const std::vector<std::string>& args) {
+    if (args.empty()) {
+        std::cerr << usage;
+        return firtp::cli::exit_usage_error;
+    }
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::cout << usage;
+        return 0;
+    }
+    if (args[0] == "plan") return firtp::cli::plan_command(std::span(args).subspan(1));
+    throw firtp::cli::UsageError("unknown command '" + args[0] + "' (see firtp --help)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return dispatch(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const firtp::cli::UsageError& e) {
+        std::cerr << "firtp: " << e.what() << "\n";
+        return firtp::cli::exit_usage_error;
+    } catch (const std::exception& e) {
+        std::cerr << "firtp: " << e.what() << "\n";
+        return firtp::cli::exit_input_error;
+    }
+}

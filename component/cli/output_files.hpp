@@ -1,0 +1,32 @@
+// Output files written as temporaries beside their targets and renamed into place together once
+// everything succeeded; temporaries not committed are removed when the object goes away.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+namespace firtp::cli {
+
+class OutputFiles {
+public:
+    OutputFiles() = default;
+    OutputFiles(const OutputFiles&) = delete;
+    OutputFiles& operator=(const OutputFiles&) = delete;
+    ~OutputFiles();
+
+    // Creates an empty temporary ".NAME.XXXXXX" in the target's directory and returns its path.
+    // Throws std::runtime_error naming the target when that fails.
+    std::filesystem::path create(const std::filesystem::path& target);
+
+    // Renames every temporary onto its target.
+    void commit();
+
+private:
+    struct Pending {
+        std::filesystem::path temporary;
+        std::filesystem::path target;
+    };
+    std::vector<Pending> pending_;
+};
+
+}  // namespace firtp::cli

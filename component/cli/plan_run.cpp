@@ -1,0 +1,69 @@
+#include "plan_run.hpp"
+
+#include "cli_errors.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace firtp::cli {
+namespace {
+
+MachineConfig load(const PlanOptions& options) {
+    MachineConfig machine = options.ini ? load_machine(IniFile::read(*options.ini)) : default_machine();
+    try {
+        apply_overrides(machine, options.overrides);
+    } catch (const ConfigError& e) {
+        throw UsageError(e.what());  // names the flag
+    }
+    if (options.tolerance_meaning) machine.tolerance_meaning = *options.tolerance_meaning;
+    return machine;
+}
+
+// Points of the path and the total pulse width sum(Tv) over the blocks that move.
+std::vector<AxisVector> moving_points(const Program& program, double& tv_sum) {
+    std::vector<AxisVector> points{program.start};
+    tv_sum = 0.0;
+    for (const Block& block : program.blocks) {
+        const double length = (block.target - points.back()).norm();
+        if (length < min_block_length) continue;  // skipped by the planner too
+        tv_sum += length / block.feed;
+        points.push_back(block.target);
+    }
+    return points;
+}
+
+Trajectory plan(const PlannerParameters& parameters, const Program& program) {
+    try {
+        return plan_trajectory(parameters, program.start, program.blocks);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(program.file + ": " + e.what());
+    }
+}
+
+}  // namespace
+
+PlanRun run_plan(const PlanOptions& options) {
+    PlanRun run;
+    run.machine = load(options);
+    run.parameters = run.machine.planner_parameters();
+    run.program = read_gcode(options.program, run.machine);
+    run.trajectory = plan(run.parameters, run.program);
+
+    double tv_sum = 0.0;
+    run.points = moving_points(run.program, tv_sum);
+    run.measured = measure(run.trajectory.samples, run.points, run.parameters.period);
+
+    // Interior points and corners are the same junctions, in order, when both skipped the same blocks.
+    const auto& corners = run.trajectory.corners;
+    const bool matched = run.measured.corner_errors.size() == corners.size();
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
+
+    const double td = run.parameters.filters.delay();
+    double gaps = 0.0;
+    for (const CornerReport& c : corners) gaps += td - c.tk;
+    run.closed_form_cycle_time = run.points.size() > 1 ? tv_sum + gaps + td : 0.0;
+    return run;
+}
+
+}  // namespace firtp::cli

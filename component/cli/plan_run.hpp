@@ -1,0 +1,31 @@
+// One planned program: machine, blocks, sampled trajectory and what was measured on it.
+#pragma once
+
+#include "plan_options.hpp"
+
+#include <firtp/gcode.hpp>
+#include <firtp/machine.hpp>
+#include <firtp/measure.hpp>
+#include <firtp/trajectory.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace firtp::cli {
+
+struct PlanRun {
+    MachineConfig machine;
+    PlannerParameters parameters;
+    Program program;
+    Trajectory trajectory;
+    std::vector<AxisVector> points;  // start, then the end of every block that moves
+    Measured measured;
+    std::vector<std::optional<double>> corner_errors;  // measured, one per trajectory.corners entry
+    double closed_form_cycle_time = 0.0;  // sum(Tv) + sum(Td - Tk) + Td
+};
+
+// Loads the machine (INI or built-in, then overrides), reads and plans the program, measures it.
+// Throws UsageError for bad flag values, ConfigError / GcodeError / std::runtime_error otherwise.
+PlanRun run_plan(const PlanOptions& options);
+
+}  // namespace firtp::cli

@@ -1,0 +1,73 @@
+#include "summary.hpp"
+
+#include "number_text.hpp"
+#include "text_cat.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace firtp::cli {
+namespace {
+
+std::string ms(double seconds) { return fixed_text(seconds * 1e3, 3); }
+
+std::string machine_line(const PlanRun& run) {
+    const FilterTimes& f = run.parameters.filters;
+    std::string times;
+    for (int i = 0; i < f.stages; ++i) times += (i ? ", " : "") + ms(f.T[static_cast<std::size_t>(i)]);
+    const bool contour = run.parameters.tolerance_meaning == ToleranceMeaning::contour;
+    return std::to_string(f.stages) + " FIR stages, T = " + times + " ms (Td " + ms(f.delay()) + " ms), period " +
+           ms(run.parameters.period) + " ms, tolerance bounds the " + (contour ? "contour" : "corner point");
+}
+
+// The largest measured corner error, and the corners above their tolerance.
+std::string corner_line(const PlanRun& run) {
+    const auto& corners = run.trajectory.corners;
+    std::size_t worst = corners.size();
+    std::size_t over = 0;
+    double worst_error = -1.0;
+    double worst_excess = 0.0;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        if (!run.corner_errors[i]) continue;
+        const double error = *run.corner_errors[i];
+        if (error > worst_error) worst = i, worst_error = error;
+        if (error > corners[i].epsilon) ++over, worst_excess = std::max(worst_excess, error - corners[i].epsilon);
+    }
+    if (worst == corners.size()) return "none measured";
+    const CornerReport& c = corners[worst];
+    std::string text = cat("max error ", fixed_text(worst_error, 4), " mm at line ", std::to_string(c.line),
+                           " (tolerance ", std::isfinite(c.epsilon) ? cat(fixed_text(c.epsilon, 4), " mm)") : "none)");
+    if (over == 0) return cat(text, "; all within tolerance");
+    return cat(text, "; ", std::to_string(over), " of ", std::to_string(corners.size()),
+               " above tolerance, by at most ", number_text(worst_excess), " mm");
+}
+
+std::string axis_max(const AxisVector& v, int decimals) {
+    Eigen::Index axis = 0;
+    const double value = v.head<3>().maxCoeff(&axis);
+    return fixed_text(value, decimals) + " (" + axis_letters[static_cast<std::size_t>(axis)] + ")";
+}
+
+}  // namespace
+
+void print_summary(std::ostream& out, const PlanRun& run, const std::string& program_name,
+                   const std::vector<std::filesystem::path>& written) {
+    std::size_t exact = 0;
+    for (const CornerReport& c : run.trajectory.corners) exact += c.exact_stop ? 1 : 0;
+    const Measured& m = run.measured;
+    out << "program      " << program_name << "\n"
+        << "machine      " << machine_line(run) << "\n"
+        << "blocks       " << run.points.size() - 1 << " moving, " << run.trajectory.corners.size() << " corners ("
+        << exact << " exact stop)\n"
+        << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (closed form "
+        << fixed_text(run.closed_form_cycle_time, 4) << " s)\n"
+        << "corners      " << corner_line(run) << "\n"
+        << "contour      max error " << fixed_text(m.max_contour_error, 4) << " mm\n"
+        << "speed        max path " << fixed_text(m.max_path_speed, 1) << " mm/s, axis " << axis_max(m.max_velocity, 1)
+        << " mm/s\n"
+        << "axes         max acceleration " << axis_max(m.max_acceleration, 0) << " mm/s^2, jerk "
+        << axis_max(m.max_jerk, 0) << " mm/s^3\n";
+    for (const auto& path : written) out << "wrote        " << path.string() << "\n";
+}
+
+}  // namespace firtp::cli
