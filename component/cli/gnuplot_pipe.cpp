@@ -1,6 +1,6 @@
 #include "gnuplot_pipe.hpp"
 
-#include "text_cat.hpp"
+#include <firtp/text_cat.hpp>
 
 #include <csignal>
 #include <cstdio>

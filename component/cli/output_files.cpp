@@ -1,6 +1,6 @@
 #include "output_files.hpp"
 
-#include "text_cat.hpp"
+#include <firtp/text_cat.hpp>
 
 #include <cerrno>
 #include <cstring>

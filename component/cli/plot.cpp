@@ -2,7 +2,7 @@
 
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"
-#include "text_cat.hpp"
+#include <firtp/text_cat.hpp>
 
 #include <algorithm>
 #include <cmath>

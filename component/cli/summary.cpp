@@ -1,7 +1,7 @@
 #include "summary.hpp"
 
 #include "number_text.hpp"
-#include "text_cat.hpp"
+#include <firtp/text_cat.hpp>
 
 #include <algorithm>
 #include <cmath>

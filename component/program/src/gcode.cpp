@@ -1,3 +1,4 @@
+#include <firtp/text_cat.hpp>
 #include <firtp/gcode.hpp>
 
 #include <algorithm>
@@ -13,13 +14,6 @@
 namespace firtp {
 namespace {
 
-// Joins text; appending avoids GCC 12's false -Wrestrict warning on "literal" + std::string.
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-    std::string s;
-    ((s += parts), ...);
-    return s;
-}
 
 }  // namespace
 

@@ -1,3 +1,4 @@
+#include <firtp/text_cat.hpp>
 #include <firtp/ini.hpp>
 
 #include <algorithm>
@@ -9,13 +10,6 @@
 namespace firtp {
 namespace {
 
-// Joins text; appending avoids GCC 12's false -Wrestrict warning on "literal" + std::string.
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-    std::string s;
-    ((s += parts), ...);
-    return s;
-}
 
 std::string_view trim(std::string_view s) {
     const auto first = s.find_first_not_of(" \t\r\f\v");

@@ -1,3 +1,4 @@
+#include <firtp/text_cat.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/types.hpp>
 
@@ -12,13 +13,6 @@
 namespace firtp {
 namespace {
 
-// Joins text; appending avoids GCC 12's false -Wrestrict warning on "literal" + std::string.
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-    std::string s;
-    ((s += parts), ...);
-    return s;
-}
 
 [[noreturn]] void fail(const IniFile& ini, const IniFile::Entry& e, const std::string& message) {
     throw ConfigError(cat(ini.file_name(), ":", std::to_string(e.line), ": [", e.section, "]", e.key, ": ", message));

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace firtp::cli {
+namespace firtp {
 
 template <class... Parts>
 std::string cat(const Parts&... parts) {
@@ -12,4 +12,4 @@ std::string cat(const Parts&... parts) {
     return s;
 }
 
-}  // namespace firtp::cli
+}  // namespace firtp
