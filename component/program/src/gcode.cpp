@@ -1,5 +1,6 @@
-#include <firtp/text_cat.hpp>
 #include <firtp/gcode.hpp>
+
+#include <firtp/text_cat.hpp>
 
 #include <algorithm>
 #include <array>
@@ -13,7 +14,6 @@
 
 namespace firtp {
 namespace {
-
 
 }  // namespace
 

@@ -1,5 +1,6 @@
-#include <firtp/text_cat.hpp>
 #include <firtp/ini.hpp>
+
+#include <firtp/text_cat.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -9,7 +10,6 @@
 
 namespace firtp {
 namespace {
-
 
 std::string_view trim(std::string_view s) {
     const auto first = s.find_first_not_of(" \t\r\f\v");

@@ -1,5 +1,6 @@
-#include <firtp/text_cat.hpp>
 #include <firtp/machine.hpp>
+
+#include <firtp/text_cat.hpp>
 #include <firtp/types.hpp>
 
 #include <algorithm>
@@ -12,7 +13,6 @@
 
 namespace firtp {
 namespace {
-
 
 [[noreturn]] void fail(const IniFile& ini, const IniFile::Entry& e, const std::string& message) {
     throw ConfigError(cat(ini.file_name(), ":", std::to_string(e.line), ": [", e.section, "]", e.key, ": ", message));
