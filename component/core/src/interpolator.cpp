@@ -10,6 +10,8 @@ void Interpolator::reset(const AxisVector& position) {
     count_ = 0;
     base_ = position;
     line_ = 0;
+    aborting_ = false;
+    flushed_ = false;
 }
 
 bool Interpolator::push(const PlannedBlock& block) {
@@ -29,25 +31,43 @@ void Interpolator::tick(AxisState& out) {
         head_ = (head_ + 1) % ring_.size();
         --count_;
     }
-    out.time = static_cast<double>(now_tick_) * period_;
+    AxisVector velocity = AxisVector::Zero(), acceleration = AxisVector::Zero(), jerk = AxisVector::Zero();
+    out.time = static_cast<double>(ticks_) * period_;
     out.position = base_;
-    out.velocity.setZero();
-    out.acceleration.setZero();
-    out.jerk.setZero();
     for (std::size_t i = 0; i < count_; ++i) {
         const PlannedBlock& b = ring_[(head_ + i) % ring_.size()];
         const double t = local_time(b);
         if (t <= 0.0) break;  // blocks start in queue order
         const StepSample s = chain_->pulse(t, b.tv);
         out.position += b.delta * s.position;
-        out.velocity += b.delta * s.velocity;
-        out.acceleration += b.delta * s.acceleration;
-        out.jerk += b.delta * s.jerk;
+        velocity += b.delta * s.velocity;
+        acceleration += b.delta * s.acceleration;
+        jerk += b.delta * s.jerk;
         line_ = b.line;
     }
+    // Chain rule for the scaled clock (rate r, slope r'): v = r p', a = r^2 p'' + r' p'.
+    const double r = scale_.rate(), dr = scale_.slope();
+    out.velocity = r * velocity;
+    out.acceleration = r * r * acceleration + dr * velocity;
+    out.jerk = r * r * r * jerk + 3.0 * r * dr * acceleration;
     if (count_ == 0) line_ = 0;
     out.line = line_;
-    ++now_tick_;
+
+    if (aborting_ && scale_.stopped()) {  // at rest on the path: drop the rest of the program
+        base_ = out.position;
+        head_ = 0;
+        count_ = 0;
+        line_ = 0;
+        aborting_ = false;
+        flushed_ = true;
+    }
+    ++ticks_;
+    const bool moving = count_ > 0 && local_time(ring_[head_]) > 0.0;
+    if (!moving) scale_.snap();  // nothing to ramp: an override set before a start applies at once
+    clock_fraction_ += scale_.advance(period_);
+    const double whole = clock_fraction_ >= 1.0 ? static_cast<double>(static_cast<std::int64_t>(clock_fraction_)) : 0.0;
+    clock_tick_ += static_cast<std::int64_t>(whole);
+    clock_fraction_ -= whole;
 }
 
 }  // namespace firtp

@@ -5,9 +5,13 @@
 // Drift: there are no running sums. A block whose filter window has passed is retired by setting
 // the rest position to its programmed end point, so at rest the output equals the command
 // exactly, after any number of ticks.
+//
+// Feed override and hold scale the filters' clock (TimeScale): the tool stays on the planned path
+// and, at rate 1, the clock advances by whole periods so the samples are those of the plan.
 #pragma once
 
 #include <firtp/fir_chain.hpp>
+#include <firtp/time_scale.hpp>
 #include <firtp/types.hpp>
 
 #include <cstddef>
@@ -35,10 +39,25 @@ public:
     void reset(const AxisVector& position);
 
     bool push(const PlannedBlock& block);  // false when full; nothing changes then
-    void tick(AxisState& out);             // state at now_tick() * period, then one period on
+    void tick(AxisState& out);             // state at the current clock, then one period on
 
-    std::int64_t now_tick() const { return now_tick_; }
+    // Feed override (>= 0) or hold (rate 0), reached along a ramp.
+    void set_rate(double rate) { scale_.set_target(rate); }
+    // Stop along the path, then drop every queued block and rest where the tool stopped.
+    void abort() { aborting_ = true; }
+    bool aborting() const { return aborting_; }
+    // True once after an abort finished; the planner must then be reset to rest_position().
+    bool take_flushed() {
+        const bool f = flushed_;
+        flushed_ = false;
+        return f;
+    }
+
+    // Earliest filter-clock tick a new block may start at.
+    std::int64_t now_tick() const { return clock_tick_ + (clock_fraction_ > 0.0 ? 1 : 0); }
+    std::int64_t ticks() const { return ticks_; }  // servo periods run
     double period() const { return period_; }
+    const TimeScale& time_scale() const { return scale_; }
     bool idle() const { return count_ == 0; }
     std::size_t depth() const { return count_; }  // blocks not yet finished
     std::size_t free() const { return ring_.size() - count_; }
@@ -47,7 +66,7 @@ public:
 
 private:
     double local_time(const PlannedBlock& b) const {
-        return static_cast<double>(now_tick_ - b.start_tick) * period_ - b.start_offset;
+        return (static_cast<double>(clock_tick_ - b.start_tick) + clock_fraction_) * period_ - b.start_offset;
     }
 
     const FirChain* chain_;
@@ -56,7 +75,12 @@ private:
     std::size_t head_ = 0;
     std::size_t count_ = 0;
     AxisVector base_;  // end point of the last retired block
-    std::int64_t now_tick_ = 0;
+    std::int64_t ticks_ = 0;
+    std::int64_t clock_tick_ = 0;    // filter clock = (clock_tick_ + clock_fraction_) periods
+    double clock_fraction_ = 0.0;    // in [0, 1)
+    TimeScale scale_;
+    bool aborting_ = false;
+    bool flushed_ = false;
     std::int64_t line_ = 0;
 };
 
