@@ -1,0 +1,158 @@
+#include "component_core.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace firtp {
+
+namespace {
+
+ComponentSettings checked(const ComponentSettings& s) {
+    if (s.axes < 1 || s.axes > max_axes) throw std::invalid_argument("axes must be 1 to 9");
+    if (s.queue < 2) throw std::invalid_argument("queue must hold at least 2 blocks");
+    if (!(s.planner.period > 0.0)) throw std::invalid_argument("the servo period must be positive");
+    if (s.max_blocks_per_period < 1) throw std::invalid_argument("max_blocks_per_period must be at least 1");
+    if (!(s.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
+    return s;
+}
+
+}  // namespace
+
+// Next stream record, if a stream is attached and holds one.
+bool next_record(BlockSource& source, stream::BlockRecord& record) {
+    return source.read != nullptr && source.read(source.context, record);
+}
+
+ComponentCore::ComponentCore(const ComponentSettings& settings)
+    : settings_(checked(settings)), chain_(settings.planner.filters),
+      interpolator_(chain_, settings.planner.period, settings.queue, AxisVector::Zero()),
+      planner_(settings.planner, chain_, AxisVector::Zero()) {}
+
+void ComponentCore::fail(ComponentError error) {
+    error_ = error;
+    halted_ = true;
+    ++rejected_;
+    if (!interpolator_.idle()) {
+        interpolator_.abort();  // stop on the path; the rest of the program must not run
+        aborting_ = true;
+    }
+}
+
+void ComponentCore::drop_everything(const AxisVector& at) {
+    interpolator_.reset(at);
+    planner_.reset(at);
+    aborting_ = false;
+    halted_ = true;  // the interrupted program must not continue from here
+}
+
+bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) {
+    const bool new_program = record.seq != 0 && record.program != program_;
+    if (new_program) {
+        if (!interpolator_.idle() || aborting_) {
+            fail(ComponentError::sequence_gap);  // a new program while one is still running
+            return false;
+        }
+        program_ = record.program;
+        next_seq_ = 1;
+        halted_ = false;
+        error_ = ComponentError::none;
+    }
+    if (halted_) {  // the rest of a program that was stopped
+        ++rejected_;
+        return false;
+    }
+    if (record.seq != 0 && record.seq < next_seq_) {  // already ran: never twice
+        error_ = ComponentError::repeated;
+        ++rejected_;
+        return false;
+    }
+    if (record.seq != 0 && record.seq > next_seq_) {
+        fail(ComponentError::sequence_gap);
+        return false;
+    }
+    if (!record.type_known) {
+        fail(ComponentError::bad_type);
+        return false;
+    }
+    Block block = record.block;
+    if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
+        block.tolerance = settings_.default_tolerance;
+    if (planner_.add(block, interpolator_) != Result::ok) {  // the caller made room: only bad values
+        fail(ComponentError::bad_value);
+        return false;
+    }
+    if (record.seq != 0) ++next_seq_;
+    return true;
+}
+
+void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
+    stream::BlockRecord record;
+    if (!in.enable) {
+        if (enabled_) drop_everything(last_.position);  // drives are off: no deceleration, no queue
+        enabled_ = false;
+        for (int k = 0; k < settings_.max_blocks_per_period && next_record(source, record); ++k) {
+            error_ = ComponentError::not_enabled;
+            ++rejected_;
+        }
+        if (in.strobe && !ack_) error_ = ComponentError::not_enabled, ++rejected_;
+        ack_ = in.strobe;
+        last_.velocity.setZero();
+        last_.acceleration.setZero();
+        last_.jerk.setZero();
+    } else {
+        enabled_ = true;
+        if (in.abort && !aborting_ && !interpolator_.idle()) {
+            interpolator_.abort();
+            aborting_ = true;
+        }
+        const bool stopping = in.hold || in.abort || aborting_;
+        interpolator_.set_rate(stopping ? 0.0 : std::clamp(in.feed_scale, 0.0, settings_.max_feed_scale));
+
+        if (in.abort || aborting_) {  // the operator stopped this program: refuse the rest of it
+            for (int k = 0; k < settings_.max_blocks_per_period && next_record(source, record); ++k)
+                ++rejected_;
+            if (in.strobe && !ack_) ++rejected_;
+            ack_ = in.strobe;
+            if (in.abort) halted_ = true;
+        } else {
+            if (!in.strobe) {
+                ack_ = false;
+            } else if (!ack_ && interpolator_.free() > 0) {  // a full queue makes the feeder wait
+                stream::BlockRecord pin = in.pin_block;
+                pin.type_known = in.pin_motion_type == 1 || in.pin_motion_type == 2;
+                pin.block.type = in.pin_motion_type == 1 ? MotionType::traverse : MotionType::feed;
+                accept(pin, false);
+                ack_ = true;
+            }
+            for (int k = 0; k < settings_.max_blocks_per_period && interpolator_.free() > 0 &&
+                            next_record(source, record);
+                 ++k)
+                accept(record, true);
+        }
+        interpolator_.tick(last_);
+        if (interpolator_.take_flushed()) {
+            planner_.reset(interpolator_.rest_position());
+            aborting_ = false;
+        }
+    }
+
+    out.state = last_;
+    out.ack = ack_;
+    out.busy = !interpolator_.idle();
+    out.done = interpolator_.idle();
+    out.queue_depth = static_cast<std::int32_t>(interpolator_.depth());
+    out.queue_free = static_cast<std::int32_t>(interpolator_.free());
+    out.mode = !enabled_                 ? ComponentState::disabled
+               : aborting_               ? ComponentState::aborting
+               : halted_ && error_ != ComponentError::none && error_ != ComponentError::repeated
+                                         ? ComponentState::error
+               : interpolator_.idle()    ? ComponentState::idle
+               : in.hold                 ? ComponentState::holding
+                                         : ComponentState::moving;
+    out.error = error_;
+    out.program = program_;
+    out.next_seq = next_seq_;
+    out.rejected = rejected_;
+}
+
+}  // namespace firtp

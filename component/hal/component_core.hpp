@@ -1,0 +1,99 @@
+// What the firtp HAL component does every servo period, free of HAL so it can be tested alone.
+//
+// Principle of operation: blocks arrive through the block pins (a strobe/ack handshake, one per
+// period) or the block stream (many per period, from the LCM bridge). Each accepted block is
+// checked (values, type, program and sequence number) and planned at once: the planner fixes
+// when its velocity pulse starts (overlap Tk from its tolerance) and queues it. Every period the
+// interpolator evaluates the FIR chain for the queued blocks and drives the axis outputs.
+// Feed scale and hold scale the chain's clock; abort stops on the path and drops the queue;
+// disable freezes the outputs at once and drops everything (drives are off). A bad block stops
+// the program on the path and is reported: nothing after it runs, nothing runs twice.
+#pragma once
+
+#include <firtp/interpolator.hpp>
+#include <firtp/parameters.hpp>
+#include <firtp/planner.hpp>
+#include <firtp/types.hpp>
+
+#include "stream_records.hpp"
+
+#include <cstdint>
+
+namespace firtp {
+
+// Values as in firtp_lcm::status_t.
+enum class ComponentState : std::int32_t { idle = 0, moving = 1, holding = 2, aborting = 3, error = 4, disabled = 5 };
+enum class ComponentError : std::int32_t {
+    none = 0, bad_value = 1, sequence_gap = 2, repeated = 3, queue_full = 4, bad_type = 5, not_enabled = 6, lost_state = 7
+};
+
+struct ComponentSettings {
+    PlannerParameters planner;
+    int axes = 3;
+    std::size_t queue = 1024;            // blocks the interpolator holds
+    int max_blocks_per_period = 32;      // stream records planned per period at most
+    double default_tolerance = 0.05;     // for pin blocks whose tolerance is 0
+    double max_feed_scale = 2.0;
+};
+
+struct ComponentInputs {
+    bool enable = true;
+    double feed_scale = 1.0;
+    bool hold = false;
+    bool abort = false;
+    bool strobe = false;                 // pin block handshake
+    stream::BlockRecord pin_block;
+    std::int32_t pin_motion_type = 2;
+};
+
+struct ComponentOutputs {
+    AxisState state;
+    bool ack = false;
+    bool busy = false;
+    bool done = true;
+    std::int32_t queue_depth = 0;
+    std::int32_t queue_free = 0;
+    ComponentState mode = ComponentState::idle;
+    ComponentError error = ComponentError::none;
+    std::uint32_t program = 0;
+    std::uint32_t next_seq = 1;
+    std::uint32_t rejected = 0;
+};
+
+// Where stream records come from: returns false when none is waiting.
+struct BlockSource {
+    bool (*read)(void* context, stream::BlockRecord& record) = nullptr;
+    void* context = nullptr;
+};
+
+class ComponentCore {
+public:
+    explicit ComponentCore(const ComponentSettings& settings);  // throws std::invalid_argument (init only)
+
+    // One servo period; real-time: no allocation, locks, I/O or exceptions.
+    void update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out);
+
+    const ComponentSettings& settings() const { return settings_; }
+
+private:
+    // Checks and plans one block; false (and the error latched) when it must not run.
+    bool accept(const stream::BlockRecord& record, bool type_known);
+    void fail(ComponentError error);
+    void drop_everything(const AxisVector& at);
+
+    ComponentSettings settings_;
+    FirChain chain_;
+    Interpolator interpolator_;
+    Planner planner_;
+    AxisState last_{};
+    bool enabled_ = true;
+    bool aborting_ = false;
+    bool halted_ = false;                 // after a bad block: refuse the rest of that program
+    bool ack_ = false;
+    ComponentError error_ = ComponentError::none;
+    std::uint32_t program_ = 0;
+    std::uint32_t next_seq_ = 1;
+    std::uint32_t rejected_ = 0;
+};
+
+}  // namespace firtp

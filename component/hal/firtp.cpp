@@ -1,0 +1,271 @@
+// firtp: FIR-filter corner smoothing as a LinuxCNC-style HAL component.
+//
+//   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
+//                [period_ns=1000000] [queue=1024] [max_blocks=32] [block_key=K] [state_key=K]
+//                [stream_depth=4096]
+//   addf firtp.update servo-thread
+//
+// Principle of operation (see component_core.hpp): blocks come in through the firtp.block.*
+// pins with a strobe/ack handshake, or many per period through the hal_stream `block_key` that
+// the LCM bridge writes. Each is checked and planned when accepted; every period firtp.update
+// advances the FIR chain and drives firtp.axis.N.{pos,vel,acc}-cmd. Every period's axis state
+// also goes to the hal_stream `state_key` for recording. Filter times not given come from
+// nothing: give t1 (and t2 for two stages, ...) in seconds.
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+
+#include "component_core.hpp"
+#include "stream_records.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <new>
+
+MODULE_AUTHOR("firtp");
+MODULE_DESCRIPTION("FIR-filter kinematic corner smoothing trajectory planner (Sencer et al. 2015)");
+MODULE_LICENSE("GPL");
+
+static int axes = 3;
+RTAPI_MP_INT(axes, "number of axes, 1..9 (X Y Z A B C U V W)");
+static int stages = 2;
+RTAPI_MP_INT(stages, "FIR stages, 1..4");
+static char* t1 = nullptr;
+RTAPI_MP_STRING(t1, "T1 in seconds (Eq. 1-2), the longest stage");
+static char* t2 = nullptr;
+RTAPI_MP_STRING(t2, "T2 in seconds");
+static char* t3 = nullptr;
+RTAPI_MP_STRING(t3, "T3 in seconds");
+static char* t4 = nullptr;
+RTAPI_MP_STRING(t4, "T4 in seconds");
+static char* tolerance = nullptr;
+RTAPI_MP_STRING(tolerance, "default corner tolerance in machine units for pin blocks with tolerance 0 (0.05)");
+static char* meaning = nullptr;
+RTAPI_MP_STRING(meaning, "what the tolerance bounds: corner (closest approach to the corner point) or contour");
+static long period_ns = 1000000;
+RTAPI_MP_LONG(period_ns, "period of the thread firtp.update runs in, ns");
+static int queue = 1024;
+RTAPI_MP_INT(queue, "blocks the planner holds at once");
+static int max_blocks = 32;
+RTAPI_MP_INT(max_blocks, "stream blocks planned per period at most");
+static long block_key = firtp::stream::default_block_key;
+RTAPI_MP_LONG(block_key, "hal_stream key of the block stream (0: pins only)");
+static long state_key = firtp::stream::default_state_key;
+RTAPI_MP_LONG(state_key, "hal_stream key of the axis-state stream (0: none)");
+static int stream_depth = 4096;
+RTAPI_MP_INT(stream_depth, "records each stream holds");
+
+namespace {
+
+struct AxisPins {
+    hal_float_t* pos_cmd;  // out: commanded position
+    hal_float_t* vel_cmd;  // out: commanded velocity
+    hal_float_t* acc_cmd;  // out: commanded acceleration
+};
+
+struct Pins {
+    AxisPins axis[firtp::max_axes];
+    // one block, strobe/ack handshake
+    hal_float_t* block_target[firtp::max_axes];  // in: absolute end point
+    hal_float_t* block_feed;                       // in: path speed, units/s
+    hal_float_t* block_tolerance;                  // in: corner tolerance, 0 = default
+    hal_s32_t* block_motion_type;                  // in: 1 traverse, 2 feed
+    hal_bit_t* block_exact_stop;                   // in: stop at the end of this block
+    hal_s32_t* block_line;                         // in: source line
+    hal_u32_t* block_program;                      // in: program id (with seq)
+    hal_u32_t* block_seq;                          // in: 1, 2, ... (0: not checked)
+    hal_bit_t* block_strobe;                       // in: raise when the block pins are set
+    hal_bit_t* block_ack;                          // out: follows strobe once the block was taken
+    // status
+    hal_bit_t* busy;                               // out: blocks queued or moving
+    hal_bit_t* done;                               // out: nothing left to do
+    hal_s32_t* queue_depth;                        // out: blocks not finished
+    hal_s32_t* queue_free;                         // out: blocks that can still be taken
+    hal_s32_t* current_line;                       // out: line of the moving block
+    hal_s32_t* state;                              // out: 0 idle 1 moving 2 holding 3 aborting 4 error 5 disabled
+    hal_s32_t* error_code;                         // out: latest error, 0 none (firtp_lcm::status_t codes)
+    hal_u32_t* program;                            // out: program being accepted
+    hal_u32_t* next_seq;                           // out: seq expected next
+    hal_u32_t* rejected;                           // out: blocks refused so far
+    hal_u32_t* tick;                               // out: periods run
+    hal_u32_t* state_overruns;                     // out: axis states lost to a full stream
+    // control
+    hal_bit_t* enable;                             // in: off = stop at once and drop everything
+    hal_float_t* feed_scale;                       // in: feed override (1 = programmed)
+    hal_bit_t* hold;                               // in: stop on the path and wait
+    hal_bit_t* abort;                              // in: stop on the path and drop the program
+};
+
+int comp_id = -1;
+Pins* pins = nullptr;
+firtp::ComponentCore* core = nullptr;
+hal_stream_t block_stream;
+hal_stream_t state_stream;
+bool has_block_stream = false;
+bool has_state_stream = false;
+std::uint32_t state_overruns = 0;
+std::uint32_t ticks = 0;
+
+bool read_block(void*, firtp::stream::BlockRecord& record) {
+    hal_stream_data buffer[firtp::stream::block_elements];
+    if (hal_stream_read(&block_stream, buffer, nullptr) != 0) return false;
+    firtp::stream::unpack(buffer, record);
+    return true;
+}
+
+// One servo period.
+void update(void*, long) {
+    firtp::ComponentInputs in;
+    in.enable = *pins->enable;
+    in.feed_scale = *pins->feed_scale;
+    in.hold = *pins->hold;
+    in.abort = *pins->abort;
+    in.strobe = *pins->block_strobe;
+    for (int a = 0; a < firtp::max_axes; ++a) in.pin_block.block.target[a] = *pins->block_target[a];
+    in.pin_block.block.feed = *pins->block_feed;
+    in.pin_block.block.tolerance = *pins->block_tolerance;
+    in.pin_block.block.termination = *pins->block_exact_stop ? firtp::Termination::exact_stop : firtp::Termination::blend;
+    in.pin_block.block.line = *pins->block_line;
+    in.pin_block.program = *pins->block_program;
+    in.pin_block.seq = *pins->block_seq;
+    in.pin_motion_type = *pins->block_motion_type;
+
+    firtp::ComponentOutputs out;
+    core->update(in, {has_block_stream ? read_block : nullptr, nullptr}, out);
+
+    for (int a = 0; a < axes; ++a) {
+        *pins->axis[a].pos_cmd = out.state.position[a];
+        *pins->axis[a].vel_cmd = out.state.velocity[a];
+        *pins->axis[a].acc_cmd = out.state.acceleration[a];
+    }
+    *pins->block_ack = out.ack;
+    *pins->busy = out.busy;
+    *pins->done = out.done;
+    *pins->queue_depth = out.queue_depth;
+    *pins->queue_free = out.queue_free;
+    *pins->current_line = static_cast<std::int32_t>(out.state.line);
+    *pins->state = static_cast<std::int32_t>(out.mode);
+    *pins->error_code = static_cast<std::int32_t>(out.error);
+    *pins->program = out.program;
+    *pins->next_seq = out.next_seq;
+    *pins->rejected = out.rejected;
+    if (has_state_stream) {
+        hal_stream_data record[firtp::stream::state_elements];
+        for (int g = 0; g < firtp::stream::groups_for(axes); ++g) {
+            firtp::stream::pack_state(out.state, ticks, g, axes, record);
+            if (hal_stream_write(&state_stream, record) != 0) ++state_overruns;
+        }
+    }
+    ticks = ticks + 1;
+    *pins->tick = ticks;
+    *pins->state_overruns = state_overruns;
+}
+
+double number(const char* text, double fallback) { return text && *text ? std::strtod(text, nullptr) : fallback; }
+
+int make_pins() {
+    int r = 0;
+    for (int a = 0; a < axes && r == 0; ++a) {
+        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].pos_cmd, comp_id, "firtp.axis.%d.pos-cmd", a);
+        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].vel_cmd, comp_id, "firtp.axis.%d.vel-cmd", a);
+        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].acc_cmd, comp_id, "firtp.axis.%d.acc-cmd", a);
+    }
+    for (int a = 0; a < firtp::max_axes && r == 0; ++a)  // unused axes keep their storage, set to 0
+        if (a < axes) r = hal_pin_float_newf(HAL_IN, &pins->block_target[a], comp_id, "firtp.block.target.%d", a);
+        else pins->block_target[a] = static_cast<hal_float_t*>(hal_malloc(sizeof(hal_float_t)));
+    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->block_feed, comp_id, "firtp.block.feed");
+    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->block_tolerance, comp_id, "firtp.block.tolerance");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins->block_motion_type, comp_id, "firtp.block.motion-type");
+    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->block_exact_stop, comp_id, "firtp.block.exact-stop");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins->block_line, comp_id, "firtp.block.line");
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins->block_program, comp_id, "firtp.block.program");
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins->block_seq, comp_id, "firtp.block.seq");
+    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->block_strobe, comp_id, "firtp.block.strobe");
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->block_ack, comp_id, "firtp.block.ack");
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->busy, comp_id, "firtp.busy");
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->done, comp_id, "firtp.done");
+    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->queue_depth, comp_id, "firtp.queue-depth");
+    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->queue_free, comp_id, "firtp.queue-free");
+    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->current_line, comp_id, "firtp.current-line");
+    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->state, comp_id, "firtp.state");
+    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->error_code, comp_id, "firtp.error-code");
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->program, comp_id, "firtp.program");
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->next_seq, comp_id, "firtp.next-seq");
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->rejected, comp_id, "firtp.rejected");
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->tick, comp_id, "firtp.tick");
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->state_overruns, comp_id, "firtp.state-overruns");
+    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->enable, comp_id, "firtp.enable");
+    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->feed_scale, comp_id, "firtp.feed-scale");
+    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->hold, comp_id, "firtp.hold");
+    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->abort, comp_id, "firtp.abort");
+    if (r == 0) {
+        *pins->feed_scale = 1.0;
+        *pins->block_motion_type = 2;
+        *pins->next_seq = 1;
+    }
+    return r;
+}
+
+firtp::ComponentSettings settings_from_parameters() {
+    firtp::ComponentSettings s;
+    s.planner.filters.stages = stages;
+    const char* times[] = {t1, t2, t3, t4};
+    for (int i = 0; i < firtp::max_stages; ++i) s.planner.filters.T[i] = number(times[i], 0.0);
+    s.planner.period = static_cast<double>(period_ns) * 1e-9;
+    s.planner.tolerance_meaning = meaning && std::strcmp(meaning, "contour") == 0 ? firtp::ToleranceMeaning::contour
+                                                                                 : firtp::ToleranceMeaning::corner_point;
+    s.axes = axes;
+    s.queue = queue > 0 ? static_cast<std::size_t>(queue) : 0;
+    s.max_blocks_per_period = max_blocks;
+    s.default_tolerance = number(tolerance, 0.05);
+    return s;
+}
+
+int fail(const char* what) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "firtp: %s\n", what);
+    if (comp_id >= 0) hal_exit(comp_id);
+    comp_id = -1;
+    return -EINVAL;
+}
+
+}  // namespace
+
+extern "C" int rtapi_app_main(void) {
+    comp_id = hal_init("firtp");
+    if (comp_id < 0) return comp_id;
+    if (axes < 1 || axes > firtp::max_axes) return fail("axes must be 1 to 9");
+    if (meaning && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
+        return fail("meaning must be corner or contour");
+    try {
+        core = new firtp::ComponentCore(settings_from_parameters());  // init only, never in the servo thread
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    pins = static_cast<Pins*>(hal_malloc(sizeof(Pins)));
+    if (!pins || make_pins() != 0) return fail("cannot create pins");
+    if (block_key != 0) {
+        if (hal_stream_create(&block_stream, comp_id, static_cast<int>(block_key), stream_depth,
+                              firtp::stream::block_types) != 0)
+            return fail("cannot create the block stream");
+        has_block_stream = true;
+    }
+    if (state_key != 0) {
+        if (hal_stream_create(&state_stream, comp_id, static_cast<int>(state_key), stream_depth,
+                              firtp::stream::state_types) != 0)
+            return fail("cannot create the axis-state stream");
+        has_state_stream = true;
+    }
+    if (hal_export_funct("firtp.update", update, nullptr, 1, 0, comp_id) != 0) return fail("cannot export firtp.update");
+    hal_ready(comp_id);
+    return 0;
+}
+
+extern "C" void rtapi_app_exit(void) {
+    if (has_block_stream) hal_stream_destroy(&block_stream);
+    if (has_state_stream) hal_stream_destroy(&state_stream);
+    delete core;
+    core = nullptr;
+    if (comp_id >= 0) hal_exit(comp_id);
+}

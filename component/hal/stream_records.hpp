@@ -1,0 +1,74 @@
+// Records of the two HAL streams between the bridge (non-real-time) and the component:
+//   blocks:      bridge -> component, one record per block
+//   axis states: component -> bridge, one record per servo period and group of six axes
+// hal_stream records hold at most HAL_STREAM_MAX_PINS (21) elements of 32-bit ints or doubles.
+#pragma once
+
+#include <hal.h>
+
+#include <firtp/types.hpp>
+
+#include <cstdint>
+
+namespace firtp::stream {
+
+inline constexpr int default_block_key = 0x46495242;  // "FIRB"
+inline constexpr int default_state_key = 0x46495253;  // "FIRS"
+
+// target[9], feed, tolerance, line, motion type, termination, program, seq
+inline constexpr const char* block_types = "fffffffffffsssuu";
+inline constexpr int block_elements = 16;
+
+struct BlockRecord {
+    Block block;
+    std::uint32_t program = 0;
+    std::uint32_t seq = 0;       // 0 on the pins: not checked
+    bool type_known = true;      // motion type and termination were valid codes
+};
+
+inline void pack(const BlockRecord& r, hal_stream_data* out) {
+    for (int a = 0; a < max_axes; ++a) out[a].f = r.block.target[a];
+    out[9].f = r.block.feed;
+    out[10].f = r.block.tolerance;
+    out[11].s = static_cast<std::int32_t>(r.block.line);
+    out[12].s = static_cast<std::int32_t>(r.block.type);
+    out[13].s = r.block.termination == Termination::blend ? 1 : 0;
+    out[14].u = r.program;
+    out[15].u = r.seq;
+}
+
+// Sets type_known false when the motion type or termination is not a known code.
+inline void unpack(const hal_stream_data* in, BlockRecord& r) {
+    for (int a = 0; a < max_axes; ++a) r.block.target[a] = in[a].f;
+    r.block.feed = in[9].f;
+    r.block.tolerance = in[10].f;
+    r.block.line = in[11].s;
+    const std::int32_t type = in[12].s, termination = in[13].s;
+    r.program = in[14].u;
+    r.seq = in[15].u;
+    r.type_known = (type == 1 || type == 2) && (termination == 0 || termination == 1);
+    r.block.type = type == 1 ? MotionType::traverse : MotionType::feed;
+    r.block.termination = termination == 1 ? Termination::blend : Termination::exact_stop;
+}
+
+// tick, line, group (0: axes 0-5, 1: axes 6-8), then position, velocity, acceleration of six axes
+inline constexpr const char* state_types = "usu" "fff" "fff" "fff" "fff" "fff" "fff";
+inline constexpr int state_elements = 21;
+inline constexpr int axes_per_group = 6;
+
+inline int groups_for(int axes) { return axes > axes_per_group ? 2 : 1; }
+
+inline void pack_state(const AxisState& s, std::int64_t tick, int group, int axes, hal_stream_data* out) {
+    out[0].u = static_cast<std::uint32_t>(tick);
+    out[1].s = static_cast<std::int32_t>(s.line);
+    out[2].u = static_cast<std::uint32_t>(group);
+    for (int i = 0; i < axes_per_group; ++i) {
+        const int a = group * axes_per_group + i;
+        const bool used = a < axes;
+        out[3 + 3 * i].f = used ? s.position[a] : 0.0;
+        out[4 + 3 * i].f = used ? s.velocity[a] : 0.0;
+        out[5 + 3 * i].f = used ? s.acceleration[a] : 0.0;
+    }
+}
+
+}  // namespace firtp::stream

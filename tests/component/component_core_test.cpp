@@ -1,0 +1,212 @@
+// The component's real-time logic: blocks through the stream or the pins, sequence numbers,
+// errors that stop the program on the path, abort, disable.
+#include "support/reference.hpp"
+
+#include <component_core.hpp>
+#include <firtp/measure.hpp>
+#include <firtp/trajectory.hpp>
+
+#include <gtest/gtest.h>
+
+#include <deque>
+
+using namespace firtp;
+using firtp::test::xyz;
+
+namespace {
+
+struct FakeStream {
+    std::deque<stream::BlockRecord> records;
+    int reads = 0;
+    static bool read(void* self, stream::BlockRecord& r) {
+        auto* s = static_cast<FakeStream*>(self);
+        if (s->records.empty()) return false;
+        r = s->records.front();
+        s->records.pop_front();
+        ++s->reads;
+        return true;
+    }
+    BlockSource source() { return {read, this}; }
+};
+
+ComponentSettings settings() {
+    ComponentSettings s;
+    s.planner.filters = test::chain_of({0.148, 0.089});
+    s.planner.period = 0.001;
+    return s;
+}
+
+std::vector<Block> diamond() {
+    std::vector<Block> blocks;
+    for (const AxisVector& p : {xyz(25, 25), xyz(50, 0), xyz(25, -25), xyz(0, 0)}) {
+        Block b;
+        b.target = p;
+        b.feed = 250;
+        b.tolerance = 0.5;
+        b.line = static_cast<std::int64_t>(blocks.size() + 5);
+        blocks.push_back(b);
+    }
+    return blocks;
+}
+
+stream::BlockRecord record(const Block& b, std::uint32_t program, std::uint32_t seq) {
+    stream::BlockRecord r;
+    r.block = b;
+    r.program = program;
+    r.seq = seq;
+    return r;
+}
+
+struct Servo {
+    ComponentCore core{settings()};
+    FakeStream stream;
+    ComponentInputs in;
+    ComponentOutputs out;
+    std::vector<AxisState> samples;
+    void ticks(int n) {
+        for (int k = 0; k < n; ++k) {
+            core.update(in, stream.source(), out);
+            samples.push_back(out.state);
+        }
+    }
+};
+
+}  // namespace
+
+TEST(ComponentCore, StreamedBlocksGiveThePlannedTrajectory) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 7, i + 1));
+    run.ticks(1300);
+    const Trajectory plan = plan_trajectory(settings().planner, AxisVector::Zero(), blocks);
+    ASSERT_GE(run.samples.size(), plan.samples.size());
+    for (std::size_t k = 0; k < plan.samples.size(); ++k) {
+        ASSERT_EQ(run.samples[k].position, plan.samples[k].position) << "tick " << k;
+        ASSERT_EQ(run.samples[k].velocity, plan.samples[k].velocity) << "tick " << k;
+    }
+    EXPECT_EQ(run.out.mode, ComponentState::idle);
+    EXPECT_TRUE(run.out.done);
+    EXPECT_EQ(run.out.next_seq, 5u);
+    EXPECT_EQ(run.out.rejected, 0u);
+}
+
+TEST(ComponentCore, PlansAtMostTheConfiguredBlocksPerPeriod) {
+    ComponentSettings s = settings();
+    s.max_blocks_per_period = 3;
+    ComponentCore core(s);
+    FakeStream stream;
+    for (std::uint32_t i = 0; i < 10; ++i) {
+        Block b = diamond()[i % 4];
+        b.target = xyz(i + 1.0, 0);
+        stream.records.push_back(record(b, 1, i + 1));
+    }
+    ComponentOutputs out;
+    core.update({}, stream.source(), out);
+    EXPECT_EQ(stream.reads, 3);
+    EXPECT_EQ(out.next_seq, 4u);
+}
+
+TEST(ComponentCore, GapStopsOnThePathAndRefusesTheRestUntilANewProgram) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    run.stream.records.push_back(record(blocks[0], 1, 1));
+    run.ticks(50);
+    run.stream.records.push_back(record(blocks[2], 1, 3));  // seq 2 lost
+    run.stream.records.push_back(record(blocks[3], 1, 4));
+    run.ticks(1000);
+    EXPECT_EQ(run.out.error, ComponentError::sequence_gap);
+    EXPECT_EQ(run.out.mode, ComponentState::error);
+    EXPECT_EQ(run.out.rejected, 2u);
+    // Stopped on the first block's line, short of its end: nothing of seq 3 or 4 ran.
+    const AxisVector at = run.samples.back().position;
+    EXPECT_NEAR(at[0], at[1], 1e-9);
+    EXPECT_LT(at[0], 25.0);
+    EXPECT_EQ(run.samples.back().velocity, AxisVector::Zero());
+    // A new program starts from where the tool stopped.
+    Block home = blocks[3];
+    run.stream.records.push_back(record(home, 2, 1));
+    run.ticks(1000);
+    EXPECT_EQ(run.out.error, ComponentError::none);
+    EXPECT_EQ(run.samples.back().position, xyz(0, 0));
+}
+
+TEST(ComponentCore, RepeatedBlockIsNotRunTwice) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    run.stream.records.push_back(record(blocks[0], 1, 1));
+    run.stream.records.push_back(record(blocks[0], 1, 1));
+    run.stream.records.push_back(record(blocks[1], 1, 2));
+    run.ticks(1000);
+    EXPECT_EQ(run.out.error, ComponentError::repeated);
+    EXPECT_EQ(run.out.rejected, 1u);
+    EXPECT_EQ(run.out.mode, ComponentState::idle);  // harmless: the program went on
+    EXPECT_EQ(run.samples.back().position, xyz(50, 0));
+}
+
+TEST(ComponentCore, BadValueOrTypeStopsTheProgram) {
+    for (int kind = 0; kind < 2; ++kind) {
+        Servo run;
+        const std::vector<Block> blocks = diamond();
+        run.stream.records.push_back(record(blocks[0], 1, 1));
+        stream::BlockRecord bad = record(blocks[1], 1, 2);
+        if (kind == 0) bad.block.feed = std::numeric_limits<double>::quiet_NaN();
+        else bad.type_known = false;
+        run.stream.records.push_back(bad);
+        run.stream.records.push_back(record(blocks[2], 1, 3));
+        run.ticks(1200);
+        EXPECT_EQ(run.out.error, kind == 0 ? ComponentError::bad_value : ComponentError::bad_type);
+        EXPECT_EQ(run.out.mode, ComponentState::error);
+        EXPECT_LT(run.samples.back().position[0], 25.0 + 1e-9);  // never turned towards X50
+        EXPECT_TRUE(run.samples.back().position.allFinite());
+    }
+}
+
+TEST(ComponentCore, PinHandshakeTakesOneBlockPerStrobe) {
+    Servo run;
+    run.in.strobe = true;
+    run.in.pin_block.block = diamond()[0];
+    run.in.pin_block.block.tolerance = 0.0;  // -> the default tolerance
+    run.ticks(5);
+    EXPECT_TRUE(run.out.ack);
+    EXPECT_EQ(run.out.queue_depth, 1);
+    run.in.strobe = false;
+    run.ticks(1);
+    EXPECT_FALSE(run.out.ack);
+    run.in.pin_block.block = diamond()[1];
+    run.in.strobe = true;
+    run.ticks(1000);
+    EXPECT_EQ(run.samples.back().position, xyz(50, 0));
+}
+
+TEST(ComponentCore, AbortStopsOnThePathAndDropsTheQueue) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
+    run.ticks(100);
+    run.in.abort = true;
+    run.ticks(400);
+    EXPECT_TRUE(run.out.done);
+    EXPECT_EQ(run.samples.back().velocity, AxisVector::Zero());
+    const AxisVector at = run.samples.back().position;
+    EXPECT_NEAR(at[0], at[1], 1e-9);  // still on the first block
+    run.in.abort = false;
+    run.stream.records.push_back(record(blocks[3], 2, 1));
+    run.ticks(1000);
+    EXPECT_EQ(run.samples.back().position, xyz(0, 0));
+}
+
+TEST(ComponentCore, DisableFreezesAtOnceAndDropsEverything) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
+    run.ticks(100);
+    const AxisVector at = run.samples.back().position;
+    run.in.enable = false;
+    run.ticks(50);
+    EXPECT_EQ(run.out.mode, ComponentState::disabled);
+    EXPECT_EQ(run.samples.back().position, at);
+    EXPECT_TRUE(run.out.done);
+    run.in.enable = true;
+    run.ticks(500);
+    EXPECT_EQ(run.samples.back().position, at);  // nothing of the old program resumes
+}
