@@ -1,0 +1,81 @@
+// The LCM bridge: a non-real-time HAL component ("firtp-bridge") between LCM and the firtp
+// component. Blocks from FIRTP_BLOCK are validated and sequenced (each (program, seq) once, in
+// order) and written into the component's block stream; FIRTP_CONTROL drives the feed-scale,
+// hold and abort pins; the component's status pins and axis-state stream go out as
+// FIRTP_STATUS and FIRTP_AXIS_STATE (every period) / FIRTP_AXIS_STATE_LIVE (decimated).
+// The handoff to the servo thread is the lock-free hal_stream; nothing here blocks it.
+#pragma once
+
+#include <firtp/messages.hpp>
+#include <firtp/types.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace firtp {
+
+struct BridgeOptions {
+    int block_key = 0x46495242;       // the component's block_key
+    int state_key = 0x46495253;       // the component's state_key (0: no axis states)
+    int axes = 3;
+    double period = 0.001;            // servo period, s
+    bool every_period = true;         // publish FIRTP_AXIS_STATE for every period
+    int live_decimation = 20;         // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
+    int status_every = 10;            // FIRTP_STATUS every N periods, and on every change
+    double max_feed_scale = 2.0;
+};
+
+class Bridge {
+public:
+    // Registers HAL component "firtp-bridge" with its pins and attaches to the streams; the
+    // caller nets the pins (see pin_names()). Throws std::runtime_error on failure.
+    Bridge(lcm::LCM& lcm, const BridgeOptions& options);
+    ~Bridge();
+    Bridge(const Bridge&) = delete;
+    Bridge& operator=(const Bridge&) = delete;
+
+    // Non-blocking: forwards axis states and publishes status. Blocks and control are handled
+    // as LCM delivers them (in the thread that calls lcm.handle*).
+    void poll();
+
+    // "bridge-pin component-pin" pairs to net, in HAL naming.
+    static const char* const* pin_pairs();
+
+    std::int64_t blocks_forwarded() const { return forwarded_; }
+    std::int64_t states_published() const { return states_; }
+
+private:
+    struct Pins;
+    void on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* message);
+    void on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* message);
+    void report(std::int32_t error, std::string text);
+    void forward_states();
+    void publish_status();
+    bool component_idle() const;
+
+    lcm::LCM* lcm_;
+    BridgeOptions options_;
+    int comp_id_ = -1;
+    Pins* pins_ = nullptr;
+    struct Streams;
+    Streams* streams_ = nullptr;
+    messages::SequenceChecker sequence_;
+    bool fault_ = false;               // a bad block: abort until a new program starts
+    std::int64_t control_seq_ = 0;
+    double feed_scale_ = 1.0;
+    bool hold_ = false, abort_ = false;
+    std::int32_t error_ = 0;
+    std::string error_text_;
+    std::int64_t rejected_ = 0;
+    std::int64_t forwarded_ = 0;
+    std::int64_t states_ = 0;
+    std::int64_t status_seq_ = 0;
+    std::int64_t state_seq_ = 0;
+    std::int64_t last_tick_ = -1;      // 64-bit extension of the stream's 32-bit tick
+    std::int64_t periods_since_status_ = 0;
+    bool status_due_ = true;
+    lcm::Subscription* block_subscription_ = nullptr;
+    lcm::Subscription* control_subscription_ = nullptr;
+};
+
+}  // namespace firtp

@@ -1,0 +1,265 @@
+#include <firtp/bridge.hpp>
+
+#include <hal.h>
+
+#include "stream_records.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace firtp {
+
+namespace {
+
+std::int64_t now_us() {
+    return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+std::string describe_block(const firtp_lcm::block_t& m) {
+    return "block seq " + std::to_string(m.seq) + " (line " + std::to_string(m.line) + ")";
+}
+
+const char* describe_component_error(std::int32_t code) {
+    switch (code) {
+        case firtp_lcm::status_t::ERROR_BAD_VALUE: return "the component refused a block: bad value";
+        case firtp_lcm::status_t::ERROR_SEQUENCE_GAP: return "the component saw a sequence gap";
+        case firtp_lcm::status_t::ERROR_REPEATED: return "the component ignored a repeated block";
+        case firtp_lcm::status_t::ERROR_BAD_TYPE: return "the component refused a block: unknown motion type";
+        case firtp_lcm::status_t::ERROR_NOT_ENABLED: return "the component is not enabled: blocks dropped";
+        default: return "the component reported an error";
+    }
+}
+
+const char* const pairs[] = {
+    "firtp-bridge.feed-scale", "firtp.feed-scale",       "firtp-bridge.hold",        "firtp.hold",
+    "firtp-bridge.abort",      "firtp.abort",            "firtp-bridge.queue-depth", "firtp.queue-depth",
+    "firtp-bridge.state",      "firtp.state",            "firtp-bridge.error-code",  "firtp.error-code",
+    "firtp-bridge.rejected",   "firtp.rejected",         "firtp-bridge.tick",        "firtp.tick",
+    "firtp-bridge.current-line", "firtp.current-line",   nullptr,                    nullptr};
+
+}  // namespace
+
+struct Bridge::Pins {
+    hal_float_t* feed_scale;  // out: feed override for the component
+    hal_bit_t* hold;          // out
+    hal_bit_t* abort;         // out: operator abort, or a bad block
+    hal_s32_t* queue_depth;   // in: the component's
+    hal_s32_t* state;         // in
+    hal_s32_t* error_code;    // in
+    hal_u32_t* rejected;      // in
+    hal_u32_t* tick;          // in
+    hal_s32_t* current_line;  // in
+};
+
+struct Bridge::Streams {
+    hal_stream_t blocks;
+    hal_stream_t states;
+    bool has_states = false;
+    AxisState pending;  // axis state being assembled from its groups
+};
+
+const char* const* Bridge::pin_pairs() { return pairs; }
+
+Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), options_(options) {
+    comp_id_ = hal_init("firtp-bridge");
+    if (comp_id_ < 0) throw std::runtime_error("firtp-bridge: hal_init failed");
+    pins_ = static_cast<Pins*>(hal_malloc(sizeof(Pins)));
+    streams_ = new Streams;
+    int r = pins_ ? 0 : -1;
+    r = r ? r : hal_pin_float_newf(HAL_OUT, &pins_->feed_scale, comp_id_, "firtp-bridge.feed-scale");
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->hold, comp_id_, "firtp-bridge.hold");
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->abort, comp_id_, "firtp-bridge.abort");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->queue_depth, comp_id_, "firtp-bridge.queue-depth");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->state, comp_id_, "firtp-bridge.state");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->error_code, comp_id_, "firtp-bridge.error-code");
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->rejected, comp_id_, "firtp-bridge.rejected");
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->tick, comp_id_, "firtp-bridge.tick");
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->current_line, comp_id_, "firtp-bridge.current-line");
+    if (r == 0) *pins_->feed_scale = 1.0;
+    r = r ? r : hal_stream_attach(&streams_->blocks, comp_id_, options.block_key, stream::block_types);
+    if (r == 0 && options.state_key != 0) {
+        r = hal_stream_attach(&streams_->states, comp_id_, options.state_key, stream::state_types);
+        streams_->has_states = r == 0;
+    }
+    if (r != 0) {
+        delete streams_;
+        hal_exit(comp_id_);
+        throw std::runtime_error("firtp-bridge: cannot create pins or attach to the component's streams "
+                                 "(is firtp loaded with the same block_key/state_key?)");
+    }
+    hal_ready(comp_id_);
+    block_subscription_ = lcm.subscribe(messages::block_channel, &Bridge::on_block, this);
+    control_subscription_ = lcm.subscribe(messages::control_channel, &Bridge::on_control, this);
+    messages::keep_everything(block_subscription_);
+    messages::keep_everything(control_subscription_);
+}
+
+Bridge::~Bridge() {
+    lcm_->unsubscribe(block_subscription_);
+    lcm_->unsubscribe(control_subscription_);
+    hal_stream_detach(&streams_->blocks);
+    if (streams_->has_states) hal_stream_detach(&streams_->states);
+    delete streams_;
+    hal_exit(comp_id_);
+}
+
+void Bridge::report(std::int32_t error, std::string text) {
+    error_ = error;
+    error_text_ = std::move(text);
+    status_due_ = true;
+}
+
+bool Bridge::component_idle() const {
+    return *pins_->queue_depth == 0 && hal_stream_depth(&streams_->blocks) == 0 &&
+           *pins_->state != firtp_lcm::status_t::ABORTING;
+}
+
+void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* m) {
+    using Verdict = messages::SequenceChecker::Verdict;
+    status_due_ = true;
+    if (const auto why = messages::validate(*m)) {
+        ++rejected_;
+        fault_ = true;  // the program cannot go on without this block: stop it on the path
+        *pins_->abort = true;
+        report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
+        return;
+    }
+    const Verdict verdict = sequence_.check(m->program, m->seq, component_idle());
+    if (verdict != Verdict::accept) {
+        ++rejected_;
+        const std::int32_t code = verdict == Verdict::repeated
+                                      ? std::int32_t{firtp_lcm::status_t::ERROR_REPEATED}
+                                      : std::int32_t{firtp_lcm::status_t::ERROR_SEQUENCE_GAP};
+        report(code, describe_block(*m) + ": " + messages::SequenceChecker::describe(verdict) + ", expected seq " +
+                         std::to_string(sequence_.next_seq()));
+        return;
+    }
+    const bool new_program = m->program != sequence_.program();
+    if (new_program) {
+        fault_ = false;
+        error_ = 0;
+        error_text_.clear();
+    }
+    if (fault_ || abort_) {
+        ++rejected_;
+        report(firtp_lcm::status_t::ERROR_SEQUENCE_GAP,
+               describe_block(*m) + ": refused, the program was " + (abort_ ? "aborted" : "stopped by an error"));
+        return;
+    }
+    if (!hal_stream_writable(&streams_->blocks)) {
+        ++rejected_;
+        report(firtp_lcm::status_t::ERROR_QUEUE_FULL, describe_block(*m) + ": the block stream is full, resend");
+        return;
+    }
+    stream::BlockRecord record;
+    record.block = messages::to_block(*m);
+    record.program = static_cast<std::uint32_t>(m->program);
+    record.seq = static_cast<std::uint32_t>(m->seq);
+    hal_stream_data buffer[stream::block_elements];
+    stream::pack(record, buffer);
+    *pins_->abort = false;
+    hal_stream_write(&streams_->blocks, buffer);
+    sequence_.accepted(m->program, m->seq);
+    ++forwarded_;
+}
+
+void Bridge::on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* m) {
+    if (m->seq <= control_seq_) return;  // older than what is in effect
+    control_seq_ = m->seq;
+    if (!std::isfinite(m->feed_scale) || m->feed_scale < 0.0) {
+        report(firtp_lcm::status_t::ERROR_BAD_VALUE, "control seq " + std::to_string(m->seq) + ": feed_scale " +
+                                                         std::to_string(m->feed_scale) + " is not in 0.." +
+                                                         std::to_string(options_.max_feed_scale));
+    } else {
+        feed_scale_ = std::min(m->feed_scale, options_.max_feed_scale);
+    }
+    hold_ = m->hold;
+    abort_ = m->abort;
+    *pins_->feed_scale = feed_scale_;
+    *pins_->hold = hold_;
+    *pins_->abort = abort_ || fault_;
+    status_due_ = true;
+}
+
+void Bridge::forward_states() {
+    if (!streams_->has_states) return;
+    hal_stream_data record[stream::state_elements];
+    const int groups = stream::groups_for(options_.axes);
+    while (hal_stream_read(&streams_->states, record, nullptr) == 0) {
+        AxisState& s = streams_->pending;
+        const int group = static_cast<int>(record[2].u);
+        for (int i = 0; i < stream::axes_per_group; ++i) {
+            const int a = group * stream::axes_per_group + i;
+            if (a >= max_axes) break;
+            s.position[a] = record[3 + 3 * i].f;
+            s.velocity[a] = record[4 + 3 * i].f;
+            s.acceleration[a] = record[5 + 3 * i].f;
+        }
+        if (group != groups - 1) continue;
+        const std::uint32_t tick32 = record[0].u;
+        const std::int64_t tick =
+            last_tick_ < 0 ? tick32 : last_tick_ + static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(last_tick_));
+        if (last_tick_ >= 0 && tick != last_tick_ + 1)
+            report(firtp_lcm::status_t::ERROR_LOST_STATE,
+                   std::to_string(tick - last_tick_ - 1) + " axis states lost before tick " + std::to_string(tick) +
+                       " (the bridge fell behind the servo thread)");
+        last_tick_ = tick;
+        firtp_lcm::axis_state_t m;
+        m.utime = now_us();
+        m.tick = tick;
+        m.time = static_cast<double>(tick) * options_.period;
+        m.line = record[1].s;
+        for (int a = 0; a < max_axes; ++a) {
+            m.position[a] = s.position[a];
+            m.velocity[a] = s.velocity[a];
+            m.acceleration[a] = s.acceleration[a];
+        }
+        if (options_.every_period) {
+            m.seq = ++state_seq_;
+            lcm_->publish(messages::axis_state_channel, &m);
+        }
+        if (options_.live_decimation > 0 && tick % options_.live_decimation == 0) {
+            m.seq = tick / options_.live_decimation;
+            lcm_->publish(messages::axis_state_live_channel, &m);
+        }
+        ++states_;
+        if (++periods_since_status_ >= options_.status_every) status_due_ = true;
+    }
+}
+
+void Bridge::publish_status() {
+    firtp_lcm::status_t s;
+    s.utime = now_us();
+    s.seq = ++status_seq_;
+    s.tick = *pins_->tick;
+    s.program = sequence_.program();
+    s.next_seq = sequence_.next_seq();
+    const int stream_depth = hal_stream_depth(&streams_->blocks);
+    s.queue_depth = *pins_->queue_depth + stream_depth;
+    s.queue_free = hal_stream_maxdepth(&streams_->blocks) - 1 - stream_depth;
+    s.current_line = *pins_->current_line;
+    s.state = fault_ ? std::int8_t{firtp_lcm::status_t::ERROR} : static_cast<std::int8_t>(*pins_->state);
+    s.feed_scale = feed_scale_;
+    const std::int32_t component_error = *pins_->error_code;
+    if (error_ == 0 && component_error != 0) {
+        s.error_code = component_error;
+        s.error_text = describe_component_error(component_error);
+    } else {
+        s.error_code = error_;
+        s.error_text = error_text_;
+    }
+    s.rejected = rejected_ + *pins_->rejected;
+    lcm_->publish(messages::status_channel, &s);
+    periods_since_status_ = 0;
+    status_due_ = false;
+}
+
+void Bridge::poll() {
+    forward_states();
+    if (status_due_) publish_status();
+}
+
+}  // namespace firtp

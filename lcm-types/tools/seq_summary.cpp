@@ -1,0 +1,82 @@
+#include "seq_summary.hpp"
+
+#include <iterator>
+
+namespace firtp::dump {
+namespace {
+
+constexpr int max_listed_gaps = 10;
+
+// Adds seq to the runs; false when it was there already.
+bool insert(std::map<std::int64_t, std::int64_t>& runs, std::int64_t seq) {
+    auto next = runs.upper_bound(seq);  // first run starting after seq
+    if (next != runs.begin()) {
+        auto run = std::prev(next);
+        if (seq <= run->second) return false;
+        if (seq == run->second + 1) {
+            run->second = seq;
+            if (next != runs.end() && next->first == seq + 1) {
+                run->second = next->second;
+                runs.erase(next);
+            }
+            return true;
+        }
+    }
+    if (next != runs.end() && next->first == seq + 1) {
+        const std::int64_t last = next->second;
+        runs.erase(next);
+        runs.emplace(seq, last);
+        return true;
+    }
+    runs.emplace(seq, seq);
+    return true;
+}
+
+std::string range(std::int64_t first, std::int64_t last) {
+    std::string text = std::to_string(first);
+    if (last != first) text.append("-").append(std::to_string(last));
+    return text;
+}
+
+}  // namespace
+
+void SeqSummary::add(const std::string& channel, const std::optional<SeqKey>& key) {
+    Channel& c = channels_[channel];
+    ++c.events;
+    if (!key) {
+        ++c.unknown;
+        return;
+    }
+    Stream& s = c.programs[key->program];
+    const bool first = s.events++ == 0;
+    if (!insert(s.runs, key->seq))
+        ++s.repeated;
+    else if (!first && key->seq < s.highest)
+        ++s.reordered;
+    if (first || key->seq > s.highest) s.highest = key->seq;
+}
+
+void SeqSummary::print(std::ostream& out) const {
+    for (const auto& [name, c] : channels_) {
+        if (c.unknown > 0) out << name << " events=" << c.unknown << " unknown type\n";
+        for (const auto& [program, s] : c.programs) {
+            out << name;
+            if (program != 0) out << " program=" << program;
+            const std::int64_t first = s.runs.begin()->first;
+            std::int64_t missing = 0;
+            std::string gaps;
+            int listed = 0;
+            for (auto run = s.runs.begin(); std::next(run) != s.runs.end(); ++run) {
+                const std::int64_t from = run->second + 1, to = std::next(run)->first - 1;
+                missing += to - from + 1;
+                if (listed++ < max_listed_gaps) gaps.append(gaps.empty() ? "" : ",").append(range(from, to));
+                else if (listed == max_listed_gaps + 1) gaps.append(",...");
+            }
+            out << " events=" << s.events << " seq=" << range(first, s.highest) << " missing=" << missing;
+            if (!gaps.empty()) out << " gaps=" << gaps;
+            out << " repeated=" << s.repeated << " reordered=" << s.reordered << "\n";
+        }
+    }
+}
+
+}  // namespace firtp::dump

@@ -1,0 +1,35 @@
+// Per channel (and per program for blocks): how many events, which seq values, what is missing.
+#pragma once
+
+#include "event_text.hpp"
+
+#include <cstdint>
+#include <map>
+#include <ostream>
+#include <string>
+#include <utility>
+
+namespace firtp::dump {
+
+class SeqSummary {
+public:
+    void add(const std::string& channel, const std::optional<SeqKey>& key);
+    void print(std::ostream& out) const;
+
+private:
+    struct Stream {
+        std::int64_t events = 0;
+        std::int64_t repeated = 0;                   // seq seen before
+        std::int64_t reordered = 0;                  // new seq below the highest seen
+        std::int64_t highest = 0;
+        std::map<std::int64_t, std::int64_t> runs;   // seen seq as [first, last] runs
+    };
+    struct Channel {
+        std::int64_t events = 0;
+        std::int64_t unknown = 0;                    // events of no firtp_lcm type
+        std::map<std::int64_t, Stream> programs;     // program 0 for the types without one
+    };
+    std::map<std::string, Channel> channels_;
+};
+
+}  // namespace firtp::dump
