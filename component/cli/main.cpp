@@ -2,6 +2,7 @@
 // turns errors into "firtp: <what>" on stderr with exit status 1 (input) or 2 (usage).
 #include "cli_errors.hpp"
 #include "plan_command.hpp"
+#include "run_command.hpp"
 
 #include <exception>
 #include <span>
@@ -16,11 +17,15 @@ constexpr const char* usage =
     "FIR-filter kinematic corner smoothing (Sencer, Ishizaki, Shamoto, CIRP Annals 2015).\n\n"
     "Commands:\n"
     "  plan PROGRAM.ngc   plan a G-code program; print a summary, optionally write\n"
-    "                     --csv FILE, --json FILE and --plot FILE.png\n\n"
+    "                     --csv FILE, --json FILE and --plot FILE.png\n"
+    "  run PROGRAM.ngc    the whole chain in this process: host stub -> LCM -> bridge -> HAL\n"
+    "                     component on a hal-shim servo thread -> axis states over LCM; same outputs\n"
+    "  serve              the HAL component and its LCM bridge on a real-time servo thread\n"
+    "  host PROGRAM.ngc   stream a program over LCM to `firtp serve`, with progress and keys\n\n"
     "Options:\n"
     "  -h, --help         show this help and exit\n\n"
-    "Run 'firtp plan --help' for the options of plan (--ini, --t1, --t2, --tolerance, --period,\n"
-    "--tolerance-meaning, --csv, --json, --plot).\n";
+    "Run 'firtp COMMAND --help' for a command's options (plan: --ini, --t1, --t2, --tolerance,\n"
+    "--period, --tolerance-meaning, --csv, --json, --plot; run, serve, host add --lcm-url).\n";
 
 int dispatch(const std::vector<std::string>& args) {
     if (args.empty()) {
@@ -32,6 +37,9 @@ int dispatch(const std::vector<std::string>& args) {
         return 0;
     }
     if (args[0] == "plan") return firtp::cli::plan_command(std::span(args).subspan(1));
+    if (args[0] == "run") return firtp::cli::run_command(std::span(args).subspan(1));
+    if (args[0] == "serve") return firtp::cli::serve_command(std::span(args).subspan(1));
+    if (args[0] == "host") return firtp::cli::host_command(std::span(args).subspan(1));
     throw firtp::cli::UsageError("unknown command '" + args[0] + "' (see firtp --help)");
 }
 

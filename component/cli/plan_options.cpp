@@ -15,13 +15,15 @@ namespace po = boost::program_options;
 
 // Flags that take a value; "--t1 -3" is joined into "--t1=-3" so a negative value reaches
 // the validation that names the flag instead of being read as an unknown option "-3".
-constexpr const char* valued_flags[] = {"--ini", "--t1", "--t2", "--tolerance", "--period",
-                                        "--tolerance-meaning", "--csv", "--json", "--plot"};
+constexpr const char* valued_flags[] = {"--ini", "--t1", "--t2", "--tolerance", "--period", "--tolerance-meaning",
+                                        "--csv", "--json", "--plot", "--lcm-url", "--module", "--max-feed",
+                                        "--duration"};
 
-po::options_description flag_descriptions() {
-    po::options_description d("Options", 100, 50);
+}  // namespace
+
+po::options_description machine_flags() {
+    po::options_description d("Machine", 100, 50);
     d.add_options()
-        ("help,h", "show this help and exit")
         ("ini", po::value<std::string>()->value_name("FILE"),
          "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]MAX_LINEAR_VELOCITY, "
          "[AXIS_<L>]MAX_VELOCITY/MAX_ACCELERATION/MAX_JERK, [FIRTP]STAGES T1..T4 MODES TOLERANCE "
@@ -34,7 +36,13 @@ po::options_description flag_descriptions() {
         ("period", po::value<double>()->value_name("S"), "servo period in seconds (overrides [EMCMOT]SERVO_PERIOD)")
         ("tolerance-meaning", po::value<std::string>()->value_name("corner|contour"),
          "what the tolerance bounds: corner = closest approach to the programmed corner point (the paper's), "
-         "contour = largest distance from the programmed path")
+         "contour = largest distance from the programmed path");
+    return d;
+}
+
+po::options_description output_flags() {
+    po::options_description d("Outputs", 100, 50);
+    d.add_options()
         ("csv", po::value<std::string>()->value_name("FILE"),
          "write one row per servo period: t,x,y,z,feed,vx,vy,vz,ax,ay,az,jx,jy,jz,line (mm, s)")
         ("json", po::value<std::string>()->value_name("FILE"),
@@ -43,6 +51,15 @@ po::options_description flag_descriptions() {
         ("plot", po::value<std::string>()->value_name("FILE.png"),
          "draw the XY path, zooms on up to 4 corners, feed and axis accelerations with gnuplot "
          "(Debian package gnuplot-nox)");
+    return d;
+}
+
+namespace {
+
+po::options_description flag_descriptions() {
+    po::options_description d("Options", 100, 50);
+    d.add_options()("help,h", "show this help and exit");
+    d.add(machine_flags()).add(output_flags());
     return d;
 }
 
@@ -74,12 +91,14 @@ std::optional<T> optional_value(const po::variables_map& vm, const char* name) {
 
 }  // namespace
 
-PlanOptions parse_plan_options(std::span<const std::string> args) {
-    po::options_description all = flag_descriptions();
-    all.add_options()("program", po::value<std::string>(), "G-code program");
+po::variables_map parse_flags(std::span<const std::string> args, const po::options_description& flags,
+                             const std::string& command, bool takes_program) {
+    po::options_description all = flags;
     po::positional_options_description positional;
-    positional.add("program", 1);
-
+    if (takes_program) {
+        all.add_options()("program", po::value<std::string>(), "G-code program");
+        positional.add("program", 1);
+    }
     po::variables_map vm;
     try {
         const auto style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
@@ -91,23 +110,35 @@ PlanOptions parse_plan_options(std::span<const std::string> args) {
                   vm);
         po::notify(vm);
     } catch (const po::error& e) {
-        throw UsageError(std::string(e.what()) + " (see firtp plan --help)");
+        throw UsageError(std::string(e.what()) + " (see firtp " + command + " --help)");
     }
+    if (takes_program && !vm.count("help") && !vm.count("program"))
+        throw UsageError(command + ": missing PROGRAM.ngc (see firtp " + command + " --help)");
+    return vm;
+}
 
-    PlanOptions o;
+void read_machine_flags(const po::variables_map& vm, PlanOptions& o) {
     o.help = vm.count("help") > 0;
-    if (o.help) return o;
-    if (!vm.count("program")) throw UsageError("plan: missing PROGRAM.ngc (see firtp plan --help)");
-    o.program = vm["program"].as<std::string>();
+    if (vm.count("program")) o.program = vm["program"].as<std::string>();
     if (const auto s = optional_value<std::string>(vm, "ini")) o.ini = *s;
     o.overrides.t1 = optional_value<double>(vm, "t1");
     o.overrides.t2 = optional_value<double>(vm, "t2");
     o.overrides.tolerance = optional_value<double>(vm, "tolerance");
     o.overrides.period = optional_value<double>(vm, "period");
     if (const auto s = optional_value<std::string>(vm, "tolerance-meaning")) o.tolerance_meaning = parse_meaning(*s);
+}
+
+void read_output_flags(const po::variables_map& vm, PlanOptions& o) {
     if (const auto s = optional_value<std::string>(vm, "csv")) o.csv = *s;
     if (const auto s = optional_value<std::string>(vm, "json")) o.json = *s;
     if (const auto s = optional_value<std::string>(vm, "plot")) o.plot = *s;
+}
+
+PlanOptions parse_plan_options(std::span<const std::string> args) {
+    const po::variables_map vm = parse_flags(args, flag_descriptions(), "plan", true);
+    PlanOptions o;
+    read_machine_flags(vm, o);
+    read_output_flags(vm, o);
     return o;
 }
 

@@ -4,6 +4,8 @@
 #include <firtp/machine.hpp>
 #include <firtp/parameters.hpp>
 
+#include <boost/program_options.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -22,6 +24,16 @@ struct PlanOptions {
 
 // Arguments after "plan". Throws UsageError for unknown flags, bad values or a missing program.
 PlanOptions parse_plan_options(std::span<const std::string> args);
+
+// Flag groups shared by the commands (plan, run, serve, host).
+boost::program_options::options_description machine_flags();  // --ini --t1 --t2 --tolerance --period ...
+boost::program_options::options_description output_flags();   // --csv --json --plot
+// Parses args with `flags` (plus the PROGRAM positional when takes_program); UsageError names `command`.
+boost::program_options::variables_map parse_flags(std::span<const std::string> args,
+                                                  const boost::program_options::options_description& flags,
+                                                  const std::string& command, bool takes_program);
+void read_machine_flags(const boost::program_options::variables_map& vm, PlanOptions& options);
+void read_output_flags(const boost::program_options::variables_map& vm, PlanOptions& options);
 
 // Text of `firtp plan --help`.
 std::string plan_help();

@@ -8,7 +8,9 @@
 namespace firtp::cli {
 namespace {
 
-MachineConfig load(const PlanOptions& options) {
+}  // namespace
+
+MachineConfig load_machine_config(const PlanOptions& options) {
     MachineConfig machine = options.ini ? load_machine(IniFile::read(*options.ini)) : default_machine();
     try {
         apply_overrides(machine, options.overrides);
@@ -18,6 +20,8 @@ MachineConfig load(const PlanOptions& options) {
     if (options.tolerance_meaning) machine.tolerance_meaning = *options.tolerance_meaning;
     return machine;
 }
+
+namespace {
 
 // Points of the path and the total pulse width sum(Tv) over the blocks that move.
 std::vector<AxisVector> moving_points(const Program& program, double& tv_sum) {
@@ -44,18 +48,24 @@ Trajectory plan(const PlannerParameters& parameters, const Program& program) {
 
 PlanRun run_plan(const PlanOptions& options) {
     PlanRun run;
-    run.machine = load(options);
+    run.machine = load_machine_config(options);
     run.parameters = run.machine.planner_parameters();
     run.program = read_gcode(options.program, run.machine);
     run.trajectory = plan(run.parameters, run.program);
+    measure_plan(run);
+    return run;
+}
 
+void measure_plan(PlanRun& run) {
     double tv_sum = 0.0;
     run.points = moving_points(run.program, tv_sum);
     run.measured = measure(run.trajectory.samples, run.points, run.parameters.period);
+    if (!run.trajectory.samples.empty()) run.trajectory.cycle_time = run.trajectory.samples.back().time;
 
     // Interior points and corners are the same junctions, in order, when both skipped the same blocks.
     const auto& corners = run.trajectory.corners;
     const bool matched = run.measured.corner_errors.size() == corners.size();
+    run.corner_errors.clear();
     for (std::size_t i = 0; i < corners.size(); ++i)
         run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
 
@@ -63,7 +73,6 @@ PlanRun run_plan(const PlanOptions& options) {
     double gaps = 0.0;
     for (const CornerReport& c : corners) gaps += td - c.tk;
     run.closed_form_cycle_time = run.points.size() > 1 ? tv_sum + gaps + td : 0.0;
-    return run;
 }
 
 }  // namespace firtp::cli

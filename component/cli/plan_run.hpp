@@ -24,8 +24,14 @@ struct PlanRun {
     double closed_form_cycle_time = 0.0;  // sum(Tv) + sum(Td - Tk) + Td
 };
 
+// The machine: INI or built-in, then the flag overrides (UsageError names a bad flag).
+MachineConfig load_machine_config(const PlanOptions& options);
+
 // Loads the machine (INI or built-in, then overrides), reads and plans the program, measures it.
 // Throws UsageError for bad flag values, ConfigError / GcodeError / std::runtime_error otherwise.
 PlanRun run_plan(const PlanOptions& options);
+
+// Measures run.trajectory.samples against run.program (points, maxima, corner errors, closed form).
+void measure_plan(PlanRun& run);
 
 }  // namespace firtp::cli

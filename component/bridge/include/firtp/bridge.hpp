@@ -42,6 +42,8 @@ public:
     static const char* const* pin_pairs();
 
     std::int64_t blocks_forwarded() const { return forwarded_; }
+    // Nothing queued in the component or its stream, and not aborting.
+    bool idle() const { return component_idle(); }
     std::int64_t states_published() const { return states_; }
 
 private:

@@ -1,0 +1,72 @@
+#include "run_command.hpp"
+
+#include "chain_options.hpp"
+#include "gnuplot_pipe.hpp"
+#include "number_text.hpp"
+#include "plan_outputs.hpp"
+#include "plan_run.hpp"
+#include "recorded_states.hpp"
+#include "servo_chain.hpp"
+#include "summary.hpp"
+
+#include <firtp/host.hpp>
+#include <firtp/text_cat.hpp>
+#include <firtp/messages.hpp>
+
+#include <iostream>
+#include <stdexcept>
+
+namespace firtp::cli {
+
+int run_command(std::span<const std::string> args) {
+    const ChainOptions options = parse_run_options(args);
+    if (options.plan.help) {
+        std::cout << run_help();
+        return 0;
+    }
+    const std::optional<std::filesystem::path> gnuplot =
+        options.plan.plot ? std::optional(find_gnuplot()) : std::nullopt;
+
+    // The plan of the same program gives the corner decisions for the report and the reference.
+    PlanRun run = run_plan(options.plan);
+    const std::vector<AxisState> planned = run.trajectory.samples;
+
+    const auto lcm = messages::open(options.lcm_url.empty() ? "memq://" : options.lcm_url);
+    ServoChain chain(*lcm, run.machine, options.module.value_or(default_module_path()));
+    host::HostOptions host_options;
+    host_options.record_axis_states = true;
+    host::Host host(*lcm, run.program, host_options);
+
+    // One servo period per round: the host publishes, LCM delivers, the component runs, the
+    // bridge publishes axis state and status for the host's next round.
+    const std::size_t limit = 4 * planned.size() + 100000;
+    host::Result result = host::Result::running;
+    for (std::size_t k = 0; k < limit && result == host::Result::running; ++k) {
+        result = host.step();
+        while (lcm->handleTimeout(0) > 0) {
+        }
+        chain.step();
+        chain.poll();
+    }
+    if (result != host::Result::done)
+        throw std::runtime_error(cat("run: the program did not complete (", host::to_string(result), "): ",
+                                     host.error()));
+
+    run.trajectory.samples = samples_from_axis_states(host.axis_states(), run.parameters.period);
+    measure_plan(run);
+    double difference = 0.0;
+    const std::size_t common = std::min(planned.size(), run.trajectory.samples.size());
+    for (std::size_t k = 0; k < common; ++k)
+        difference = std::max(difference, (planned[k].position - run.trajectory.samples[k].position).norm());
+
+    const std::vector<std::filesystem::path> written = write_outputs(run, options.plan, gnuplot);
+    print_summary(std::cout, run, options.plan.program.filename().string(), written);
+    const host::Statistics stats = host.statistics();
+    std::cout << "chain        " << run.program.blocks.size() << " blocks over LCM (" << stats.blocks_published
+              << " published, " << stats.go_backs << " resends), " << stats.axis_states
+              << " axis states back; samples " << run.trajectory.samples.size() << " vs planned " << planned.size()
+              << ", largest difference from the plan " << number_text(difference) << " mm\n";
+    return 0;
+}
+
+}  // namespace firtp::cli

@@ -1,0 +1,84 @@
+#include "servo_chain.hpp"
+
+#include "number_text.hpp"
+
+#include <firtp/text_cat.hpp>
+
+#include <firtp/hal_shim/runtime.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace firtp::cli {
+namespace {
+
+namespace shim = firtp::hal_shim;
+
+void check(const shim::Status& status, const std::string& what) {
+    if (!status.ok()) throw std::runtime_error(cat(what, ": ", status.message));
+}
+
+// loadrt arguments that give firtp.so exactly the machine's planner settings.
+std::vector<std::string> module_arguments(const MachineConfig& machine) {
+    const PlannerParameters p = machine.planner_parameters();
+    std::vector<std::string> args{
+        cat("axes=", std::to_string(machine.limits.axes)),
+        cat("stages=", std::to_string(p.filters.stages)),
+        cat("tolerance=", number_text(machine.default_tolerance)),
+        cat("meaning=", p.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner"),
+        cat("period_ns=", std::to_string(std::llround(p.period * 1e9))),
+    };
+    for (int i = 0; i < p.filters.stages; ++i)
+        args.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
+    return args;
+}
+
+}  // namespace
+
+std::filesystem::path default_module_path() {
+    if (const char* path = std::getenv("FIRTP_MODULE")) return path;
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    return error ? std::filesystem::path("firtp.so") : self.parent_path().parent_path() / "lib" / "firtp.so";
+}
+
+ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module) {
+    const long period_ns = std::lround(machine.period * 1e9);
+    check(shim::load_module("threads", {"name1=servo-thread", cat("period1=", std::to_string(period_ns))}),
+          "creating the servo thread");
+    if (!std::filesystem::exists(module))
+        throw std::runtime_error(cat("the firtp HAL component '", module.string(),
+                                     "' does not exist (build it, or give --module / $FIRTP_MODULE)"));
+    check(shim::load_module(module.string(), module_arguments(machine)), cat("loadrt ", module.string()));
+    BridgeOptions options;
+    options.axes = machine.limits.axes;
+    options.period = machine.period;
+    bridge_ = std::make_unique<Bridge>(lcm, options);
+    for (const char* const* pair = Bridge::pin_pairs(); pair[0]; pair += 2) {
+        const std::string bridge_pin = pair[0], component_pin = pair[1];
+        check(shim::net(cat(bridge_pin.substr(bridge_pin.find('.') + 1), "-net"), {bridge_pin, component_pin}),
+              cat("net ", bridge_pin, " ", component_pin));
+    }
+    check(shim::set_value("firtp.enable", "1"), "setp firtp.enable 1");
+    check(shim::add_funct("firtp.update", "servo-thread"), "addf firtp.update servo-thread");
+}
+
+ServoChain::~ServoChain() {
+    if (started_) shim::stop_threads();
+    bridge_.reset();
+    shim::unload_module("all");
+}
+
+void ServoChain::step() { check(shim::step(1), "servo period"); }
+
+void ServoChain::start() {
+    check(shim::start_threads(), "starting the servo thread");
+    started_ = true;
+}
+
+void ServoChain::poll() { bridge_->poll(); }
+
+}  // namespace firtp::cli

@@ -1,0 +1,35 @@
+// The component side of firtp in this process: hal-shim runs firtp.so on a servo thread and
+// firtp-bridge connects it to LCM, netted as a LinuxCNC HAL file would net them.
+#pragma once
+
+#include <firtp/bridge.hpp>
+#include <firtp/machine.hpp>
+
+#include <filesystem>
+#include <memory>
+
+namespace firtp::cli {
+
+// firtp.so next to this program's build (../lib/firtp.so), or $FIRTP_MODULE.
+std::filesystem::path default_module_path();
+
+class ServoChain {
+public:
+    // Loads firtp.so with the machine's settings, creates the bridge and nets them. Throws
+    // std::runtime_error naming the step that failed.
+    ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module);
+    ~ServoChain();
+    ServoChain(const ServoChain&) = delete;
+    ServoChain& operator=(const ServoChain&) = delete;
+
+    void step();   // one servo period in this thread (deterministic, no clock)
+    void start();  // or: the servo thread on the real-time clock
+    void poll();   // the bridge's non-real-time work: axis states and status out
+    Bridge& bridge() { return *bridge_; }
+
+private:
+    std::unique_ptr<Bridge> bridge_;
+    bool started_ = false;
+};
+
+}  // namespace firtp::cli
