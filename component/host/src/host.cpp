@@ -1,0 +1,253 @@
+#include <firtp/host.hpp>
+
+#include "axis_recorder.hpp"
+#include "block_stream.hpp"
+#include "control_sender.hpp"
+#include "status_watch.hpp"
+
+#include <firtp/messages.hpp>
+
+#include <algorithm>
+#include <utility>
+
+namespace firtp::host {
+namespace {
+
+using firtp_lcm::status_t;
+
+std::int64_t wall_utime() {
+    using namespace std::chrono;
+    return duration_cast<microseconds>(system_clock::now().time_since_epoch()).count();
+}
+
+constexpr int max_messages_per_step = 10000;  // step() never spins forever on a flood
+
+}  // namespace
+
+const char* to_string(Result result) {
+    switch (result) {
+        case Result::running: return "running";
+        case Result::done: return "done";
+        case Result::failed: return "failed";
+        case Result::lost: return "lost contact";
+        case Result::aborted: return "aborted";
+    }
+    return "?";
+}
+
+const char* state_name(int state) {
+    switch (state) {
+        case status_t::IDLE: return "idle";
+        case status_t::MOVING: return "moving";
+        case status_t::HOLDING: return "holding";
+        case status_t::ABORTING: return "aborting";
+        case status_t::ERROR: return "error";
+        case status_t::DISABLED: return "disabled";
+        case -1: return "waiting";
+    }
+    return "unknown";
+}
+
+struct Host::State {
+    State(lcm::LCM& l, const Program& program, HostOptions o)
+        : lcm(l),
+          options(std::move(o)),
+          program_id(options.program_id != 0 ? options.program_id : wall_utime()),
+          stream(program_id, std::ssize(program.blocks),
+                 {options.initial_window, options.resend_timeout, options.max_resends}),
+          control(options.feed_scale, options.max_feed_scale, options.control_period),
+          axes(options.record_axis_states),
+          watch(program_id, std::ssize(program.blocks)) {
+        std::int64_t seq = 0;
+        for (const Block& block : program.blocks) {
+            blocks.push_back(messages::to_message(block, program_id, ++seq, 0));
+            if (result != Result::running) continue;
+            if (auto problem = messages::validate(blocks.back())) finish(Result::failed, *problem);
+        }
+    }
+
+    Clock::time_point now() const { return options.clock ? options.clock() : Clock::now(); }
+
+    void on_status(const lcm::ReceiveBuffer*, const std::string&, const status_t* status) {
+        const Clock::time_point t = now();
+        ++statistics.statuses;
+        last_status = t;
+        if (!latest) rejected_before = status->rejected;
+        statistics.rejected = status->rejected - rejected_before;
+        latest = *status;
+        stream.on_status(*status, t);
+        if (result != Result::running) return;
+        const Result judged = watch.on_status(*status, aborting);
+        if (judged != Result::running) finish(judged, watch.error());
+    }
+
+    void on_axis_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* state) {
+        axes.on_message(*state);
+    }
+
+    void finish(Result r, std::string text) {
+        result = r;
+        error = std::move(text);
+        if (r == Result::aborted) {  // stopped and empty: let the next program in
+            control.set_abort(false);
+            control.set_hold(false);
+            publish_control(now());
+        }
+    }
+
+    void publish_control(Clock::time_point t) {
+        if (auto message = control.due(t, wall_utime())) {
+            lcm.publish(messages::control_channel, &*message);
+            ++statistics.controls;
+        }
+    }
+
+    void publish_blocks(Clock::time_point t) {
+        for (int n = 0; n < options.max_burst; ++n) {
+            const std::optional<std::int64_t> seq = stream.next();
+            if (!seq) return;
+            firtp_lcm::block_t& message = blocks[*seq - 1];
+            message.utime = wall_utime();
+            lcm.publish(messages::block_channel, &message);
+            stream.sent(*seq, t);
+            ++statistics.blocks_published;
+        }
+    }
+
+    void check_stall() {
+        const std::optional<std::int64_t> seq = stream.stalled();
+        if (!seq) return;
+        std::string text = "block seq " + std::to_string(*seq) + " (line " +
+                           std::to_string(blocks[*seq - 1].line) + ") not accepted after " +
+                           std::to_string(options.max_resends) + " resends";
+        if (latest && !latest->error_text.empty()) text += "; component: " + latest->error_text;
+        finish(Result::failed, text);
+    }
+
+    lcm::LCM& lcm;
+    HostOptions options;
+    std::int64_t program_id;
+    std::vector<firtp_lcm::block_t> blocks;  // seq i at index i - 1
+    BlockStream stream;
+    ControlSender control;
+    AxisRecorder axes;
+    StatusWatch watch;
+    lcm::Subscription* status_subscription = nullptr;
+    lcm::Subscription* axis_subscription = nullptr;
+    Result result = Result::running;
+    std::string error;
+    Statistics statistics;
+    std::optional<status_t> latest;
+    std::int64_t rejected_before = 0;  // status rejected count when this host started
+    bool started = false;
+    bool aborting = false;
+    Clock::time_point last_status{};    // or the first step, before any status
+};
+
+Host::Host(lcm::LCM& lcm, const Program& program, HostOptions options)
+    : state_(std::make_unique<State>(lcm, program, std::move(options))) {
+    State& s = *state_;
+    s.status_subscription = lcm.subscribe(messages::status_channel, &State::on_status, &s);
+    messages::keep_everything(s.status_subscription);
+    s.axis_subscription = lcm.subscribe(messages::axis_state_channel, &State::on_axis_state, &s);
+    messages::keep_everything(s.axis_subscription);
+}
+
+Host::~Host() {
+    state_->lcm.unsubscribe(state_->status_subscription);
+    state_->lcm.unsubscribe(state_->axis_subscription);
+}
+
+Result Host::step() {
+    State& s = *state_;
+    if (s.result != Result::running) return s.result;
+    if (s.blocks.empty()) {
+        s.finish(Result::done, "");
+        return s.result;
+    }
+    if (!s.started) {
+        s.started = true;
+        s.last_status = s.now();
+    }
+    for (int n = 0; n < max_messages_per_step && s.lcm.handleTimeout(0) > 0; ++n) {}
+    if (s.result != Result::running) return s.result;
+
+    const Clock::time_point t = s.now();
+    if (t - s.last_status >= s.options.status_timeout) {
+        const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(s.options.status_timeout);
+        s.finish(Result::lost, "no status from the component for " + std::to_string(ms.count()) + " ms");
+        return s.result;
+    }
+    s.stream.on_time(t);
+    s.check_stall();
+    if (s.result != Result::running) return s.result;
+    if (!s.aborting) s.publish_blocks(t);
+    s.publish_control(t);
+    return s.result;
+}
+
+Result Host::run(std::stop_token stop, std::optional<Clock::time_point> deadline) {
+    for (;;) {
+        const Result r = step();
+        if (r != Result::running || stop.stop_requested()) return r;
+        if (deadline && state_->now() >= *deadline) return r;
+        state_->lcm.handleTimeout(10);
+    }
+}
+
+void Host::set_feed_scale(double scale) {
+    if (state_->result != Result::running) return;
+    state_->control.set_feed_scale(scale);
+    state_->publish_control(state_->now());
+}
+
+void Host::hold(bool on) {
+    if (state_->result != Result::running) return;
+    state_->control.set_hold(on);
+    state_->publish_control(state_->now());
+}
+
+void Host::abort() {
+    if (state_->result != Result::running) return;
+    state_->aborting = true;
+    state_->control.set_abort(true);
+    state_->publish_control(state_->now());
+}
+
+Result Host::result() const { return state_->result; }
+const std::string& Host::error() const { return state_->error; }
+Statistics Host::statistics() const {
+    Statistics statistics = state_->statistics;
+    statistics.go_backs = state_->stream.go_backs();
+    statistics.axis_states = state_->axes.received();
+    statistics.axis_states_lost = state_->axes.lost();
+    return statistics;
+}
+std::int64_t Host::program_id() const { return state_->program_id; }
+double Host::max_feed_scale() const { return state_->control.max_feed_scale(); }
+std::string Host::axis_state_gap_text() const { return state_->axes.gap_text(); }
+const std::vector<firtp_lcm::axis_state_t>& Host::axis_states() const { return state_->axes.messages(); }
+
+Progress Host::progress() const {
+    const State& s = *state_;
+    Progress p;
+    p.blocks = s.blocks.size();
+    p.sent = static_cast<std::size_t>(s.stream.highest_sent());
+    p.acknowledged = static_cast<std::size_t>(s.stream.acknowledged());
+    p.feed_request = s.control.feed_scale();
+    p.feed_in_effect = p.feed_request;
+    p.hold = s.control.hold();
+    p.abort = s.aborting;
+    if (s.latest) {
+        const status_t& status = *s.latest;
+        p.line = status.current_line;
+        p.state = status.state;
+        p.feed_in_effect = status.feed_scale;
+        if (status.program == s.program_id)
+            p.executed = static_cast<std::size_t>(std::max<std::int64_t>(status.next_seq - 1 - status.queue_depth, 0));
+    }
+    if (s.result == Result::done) p.executed = p.blocks;
+    return p;
+}
+
+}  // namespace firtp::host

@@ -1,0 +1,202 @@
+// How a program ends: done, failed (with the component's text), lost, aborted.
+#include "test_support.hpp"
+
+#include <firtp_lcm/status_t.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <thread>
+
+namespace firtp::host::test {
+namespace {
+
+using firtp_lcm::status_t;
+using ::testing::HasSubstr;
+
+struct OutcomeTest : ::testing::Test {
+    lcm::LCM lcm{"memq://"};
+    FakeClock clock;
+};
+
+TEST_F(OutcomeTest, DoneOnlyOnceEveryBlockHasExecuted) {
+    FakeComponent component(lcm, 32);
+    component.ticks_per_block = 10;
+    const Program program = line_program(12);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    bool saw_all_acknowledged_while_running = false;
+    const Result result = run_loop(host, component, clock, 100000, [&](int) {
+        const Progress p = host.progress();
+        if (p.acknowledged == 12 && host.result() == Result::running) saw_all_acknowledged_while_running = true;
+    });
+    EXPECT_EQ(result, Result::done);
+    EXPECT_TRUE(saw_all_acknowledged_while_running);
+    EXPECT_EQ(component.executed, 12);
+    EXPECT_EQ(component.depth(), 0);
+    EXPECT_TRUE(host.error().empty());
+}
+
+TEST_F(OutcomeTest, EmptyProgramIsDoneAtOnce) {
+    FakeComponent component(lcm);
+    const Program program = line_program(0);
+    Host host(lcm, program, options_for(clock));
+    EXPECT_EQ(host.step(), Result::done);
+}
+
+TEST_F(OutcomeTest, InvalidBlockFailsBeforeAnythingIsSent) {
+    FakeComponent component(lcm);
+    Program program = line_program(5);
+    program.blocks[2].feed = std::nan("");
+    Host host(lcm, program, options_for(clock));
+    EXPECT_EQ(run_loop(host, component, clock), Result::failed);
+    EXPECT_THAT(host.error(), HasSubstr("seq 3"));
+    EXPECT_TRUE(component.received.empty());
+}
+
+TEST_F(OutcomeTest, ErrorStateFailsWithItsText) {
+    FakeComponent component(lcm, 8);
+    component.ticks_per_block = 10;
+    const Program program = line_program(40);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
+        if (tick == 50) component.fail("following error on X");
+    });
+    EXPECT_EQ(result, Result::failed);
+    EXPECT_EQ(host.error(), "following error on X");
+}
+
+TEST_F(OutcomeTest, OneOffRefusalIsRepairedByTheResend) {
+    FakeComponent component(lcm, 8);
+    const Program program = line_program(10);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    component.refuse_next(status_t::ERROR_NOT_ENABLED, "block seq 1 (line 10): component not enabled");
+    EXPECT_EQ(run_loop(host, component, clock), Result::done);  // 2..8 gaps hide it; the resend passes
+    EXPECT_EQ(seqs(component.accepted), one_to(10));
+}
+
+TEST_F(OutcomeTest, RefusalHiddenBehindGapsIsFoundByTheResend) {
+    FakeComponent component(lcm, 8);
+    const Program program = line_program(10);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    component.refuse_always = FakeComponent::Refusal{3, status_t::ERROR_BAD_TYPE, "block seq 3 (line 30): bad type"};
+    EXPECT_EQ(run_loop(host, component, clock), Result::failed);
+    EXPECT_EQ(host.error(), "block seq 3 (line 30): bad type");
+    EXPECT_EQ(host.statistics().go_backs, 1);
+}
+
+TEST_F(OutcomeTest, OldErrorOfAnEarlierProgramIsIgnored) {
+    FakeComponent component(lcm, 8);
+    component.refuse_next(status_t::ERROR_BAD_VALUE, "block seq 3 (line 7): feed is NaN");
+    firtp_lcm::block_t stale{};
+    stale.program = 5;
+    stale.seq = 1;
+    lcm.publish("FIRTP_BLOCK", &stale);
+    while (lcm.handleTimeout(0) > 0) {}
+    const Program program = line_program(10);
+    Host host(lcm, program, options_for(clock));
+    component.tick();  // the first status shows error_code BAD_VALUE of program 5
+    EXPECT_EQ(run_loop(host, component, clock), Result::done);
+}
+
+TEST_F(OutcomeTest, SilenceIsLostContact) {
+    FakeComponent component(lcm, 8);
+    component.ticks_per_block = 50;
+    const Program program = line_program(40);
+    HostOptions options = options_for(clock);
+    options.status_timeout = 2s;
+    Host host(lcm, program, options);
+    component.tick();
+    int last_tick = 0;
+    const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
+        last_tick = tick;
+        if (tick == 100) component.silent = true;
+    });
+    EXPECT_EQ(result, Result::lost);
+    EXPECT_THAT(host.error(), HasSubstr("no status from the component for 2000 ms"));
+    EXPECT_NEAR(last_tick, 2100, 3);
+}
+
+TEST_F(OutcomeTest, NoComponentAtAllIsLostContact) {
+    const Program program = line_program(3);
+    HostOptions options = options_for(clock);
+    Host host(lcm, program, options);
+    Result result = Result::running;
+    for (int tick = 0; tick < 10000 && result == Result::running; ++tick) {
+        result = host.step();
+        clock.advance(1ms);
+    }
+    EXPECT_EQ(result, Result::lost);
+}
+
+TEST_F(OutcomeTest, AbortStopsSendingAndEndsAborted) {
+    FakeComponent component(lcm, 4);
+    component.ticks_per_block = 20;
+    const Program program = line_program(50);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    std::size_t accepted_at_abort = 0;
+    const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
+        if (tick == 100) {
+            host.abort();
+            accepted_at_abort = component.accepted.size();
+        }
+    });
+    EXPECT_EQ(result, Result::aborted);
+    EXPECT_EQ(component.depth(), 0);
+    EXPECT_LT(component.executed, 50);
+    EXPECT_LE(component.accepted.size(), accepted_at_abort + 4);  // only what was already in flight
+    ASSERT_FALSE(component.controls.empty());
+    EXPECT_FALSE(component.controls.back().abort);  // released once stopped, for the next program
+    EXPECT_TRUE(std::any_of(component.controls.begin(), component.controls.end(),
+                            [](const auto& c) { return c.abort; }));
+    host.abort();  // harmless after the end
+    EXPECT_EQ(host.step(), Result::aborted);
+}
+
+TEST_F(OutcomeTest, HoldKeepsTheProgramRunningUntilResumed) {
+    FakeComponent component(lcm, 8);
+    component.ticks_per_block = 5;
+    const Program program = line_program(20);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    bool holding_seen = false;
+    const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
+        if (tick == 20) host.hold(true);
+        if (tick > 30 && tick < 2000) {
+            EXPECT_EQ(host.result(), Result::running);
+            holding_seen = holding_seen || host.progress().state == status_t::HOLDING;
+        }
+        if (tick == 2000) host.hold(false);
+    });
+    EXPECT_EQ(result, Result::done);
+    EXPECT_TRUE(holding_seen);
+    EXPECT_EQ(component.executed, 20);
+}
+
+TEST_F(OutcomeTest, RunReturnsLostWithTheRealClock) {
+    const Program program = line_program(3);
+    HostOptions options;
+    options.status_timeout = 100ms;
+    Host host(lcm, program, options);
+    const auto start = Clock::now();
+    EXPECT_EQ(host.run(), Result::lost);
+    EXPECT_GE(Clock::now() - start, 100ms);
+    EXPECT_LT(Clock::now() - start, 2s);
+}
+
+TEST_F(OutcomeTest, RunStopsAtTheDeadlineOrAStopRequest) {
+    const Program program = line_program(3);
+    Host host(lcm, program, HostOptions{});
+    EXPECT_EQ(host.run({}, Clock::now() + 30ms), Result::running);
+    std::stop_source stop;
+    stop.request_stop();
+    EXPECT_EQ(host.run(stop.get_token()), Result::running);
+}
+
+}  // namespace
+}  // namespace firtp::host::test
