@@ -33,6 +33,9 @@ void read_transport(const po::variables_map& vm, ChainOptions& o) {
 po::options_description run_flags() {
     po::options_description d = help_flag();
     d.add(machine_flags()).add(output_flags()).add(transport_flags(true));
+    d.add_options()("lcm-log", po::value<std::string>()->value_name("FILE.lcmlog"),
+                    "record every LCM message of the run (blocks, control, status, axis states) into an LCM "
+                    "log, as lcm-logger would; tests/replay/*.lcmlog are made this way");
     return d;
 }
 
@@ -61,6 +64,7 @@ ChainOptions parse_run_options(std::span<const std::string> args) {
     read_machine_flags(vm, o.plan);
     read_output_flags(vm, o.plan);
     read_transport(vm, o);
+    if (vm.count("lcm-log")) o.lcm_log = vm["lcm-log"].as<std::string>();
     return o;
 }
 

@@ -14,6 +14,7 @@ struct ChainOptions {
     PlanOptions plan;                              // program (run, host), machine, outputs (run)
     std::string lcm_url;                           // --lcm-url ("": the command's default)
     std::optional<std::filesystem::path> module;   // --module firtp.so
+    std::optional<std::filesystem::path> lcm_log;  // run --lcm-log: every message of the run
     bool exit_when_done = false;                   // serve --exit-when-done
     double duration = 0.0;                         // serve --duration S (0: until interrupted)
     double max_feed = 1.5;                         // host --max-feed

@@ -2,7 +2,7 @@
 #include "csv_writer.hpp"
 #include "output_files.hpp"
 #include "plan_run.hpp"
-#include "recorded_states.hpp"
+#include <firtp/recorded_states.hpp>
 #include "run_command.hpp"
 
 #include <firtp/host_command.hpp>
@@ -31,7 +31,7 @@ int host_command(std::span<const std::string> args) {
         h.save_axis_states = [csv, period](const std::vector<firtp_lcm::axis_state_t>& states) {
             OutputFiles outputs;
             std::ofstream out(outputs.create(csv), std::ios::binary);
-            write_csv(out, samples_from_axis_states(states, period));
+            write_csv(out, firtp::samples_from_axis_states(states, period));
             out.close();
             if (!out) throw std::runtime_error("cannot write '" + csv.string() + "'");
             outputs.commit();

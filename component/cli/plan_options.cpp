@@ -17,7 +17,7 @@ namespace po = boost::program_options;
 // the validation that names the flag instead of being read as an unknown option "-3".
 constexpr const char* valued_flags[] = {"--ini", "--t1", "--t2", "--tolerance", "--period", "--tolerance-meaning",
                                         "--csv", "--json", "--plot", "--lcm-url", "--module", "--max-feed",
-                                        "--duration"};
+                                        "--duration", "--lcm-log"};
 
 }  // namespace
 

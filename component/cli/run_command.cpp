@@ -5,11 +5,12 @@
 #include "number_text.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
-#include "recorded_states.hpp"
-#include "servo_chain.hpp"
+#include <firtp/recorded_states.hpp>
+#include <firtp/servo_chain.hpp>
 #include "summary.hpp"
 
 #include <firtp/host.hpp>
+#include <firtp/lcm_recorder.hpp>
 #include <firtp/text_cat.hpp>
 #include <firtp/messages.hpp>
 
@@ -32,7 +33,9 @@ int run_command(std::span<const std::string> args) {
     const std::vector<AxisState> planned = run.trajectory.samples;
 
     const auto lcm = messages::open(options.lcm_url.empty() ? "memq://" : options.lcm_url);
-    ServoChain chain(*lcm, run.machine, options.module.value_or(default_module_path()));
+    std::optional<LcmRecorder> recorder;
+    if (options.lcm_log) recorder.emplace(*lcm, *options.lcm_log);
+    firtp::ServoChain chain(*lcm, run.machine, options.module.value_or(firtp::default_module_path()));
     host::HostOptions host_options;
     host_options.record_axis_states = true;
     host::Host host(*lcm, run.program, host_options);
@@ -52,7 +55,7 @@ int run_command(std::span<const std::string> args) {
         throw std::runtime_error(cat("run: the program did not complete (", host::to_string(result), "): ",
                                      host.error()));
 
-    run.trajectory.samples = samples_from_axis_states(host.axis_states(), run.parameters.period);
+    run.trajectory.samples = firtp::samples_from_axis_states(host.axis_states(), run.parameters.period);
     measure_plan(run);
     double difference = 0.0;
     const std::size_t common = std::min(planned.size(), run.trajectory.samples.size());

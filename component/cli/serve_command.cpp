@@ -1,7 +1,7 @@
 #include "chain_options.hpp"
 #include "plan_run.hpp"
 #include "run_command.hpp"
-#include "servo_chain.hpp"
+#include <firtp/servo_chain.hpp>
 
 #include <firtp/messages.hpp>
 
@@ -28,7 +28,7 @@ int serve_command(std::span<const std::string> args) {
     const MachineConfig machine = load_machine_config(options.plan);
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
-    ServoChain chain(*lcm, machine, options.module.value_or(default_module_path()));
+    firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()));
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
     chain.start();

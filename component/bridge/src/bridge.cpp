@@ -107,9 +107,10 @@ Bridge::~Bridge() {
 }
 
 void Bridge::report(std::int32_t error, std::string text) {
+    status_due_ = true;
+    if (fault_ && error_ == firtp_lcm::status_t::ERROR_BAD_VALUE) return;  // keep the cause, not its echoes
     error_ = error;
     error_text_ = std::move(text);
-    status_due_ = true;
 }
 
 bool Bridge::component_idle() const {
@@ -122,9 +123,9 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
     status_due_ = true;
     if (const auto why = messages::validate(*m)) {
         ++rejected_;
+        report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
         fault_ = true;  // the program cannot go on without this block: stop it on the path
         *pins_->abort = true;
-        report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
         return;
     }
     const Verdict verdict = sequence_.check(m->program, m->seq, component_idle());
@@ -167,7 +168,8 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
 }
 
 void Bridge::on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* m) {
-    if (m->seq <= control_seq_) return;  // older than what is in effect
+    if (m->session == control_session_ && m->seq <= control_seq_) return;  // older than what is in effect
+    control_session_ = m->session;  // a new host starts its own count
     control_seq_ = m->seq;
     if (!std::isfinite(m->feed_scale) || m->feed_scale < 0.0) {
         report(firtp_lcm::status_t::ERROR_BAD_VALUE, "control seq " + std::to_string(m->seq) + ": feed_scale " +

@@ -5,8 +5,8 @@
 
 namespace firtp::host {
 
-ControlSender::ControlSender(double feed_scale, double max_feed_scale, Clock::duration period)
-    : feed_scale_(0.0), max_feed_scale_(std::max(max_feed_scale, 0.0)), period_(period) {
+ControlSender::ControlSender(std::int64_t session, double feed_scale, double max_feed_scale, Clock::duration period)
+    : session_(session), feed_scale_(0.0), max_feed_scale_(std::max(max_feed_scale, 0.0)), period_(period) {
     set_feed_scale(feed_scale);
     changed_ = true;
 }
@@ -34,6 +34,7 @@ std::optional<firtp_lcm::control_t> ControlSender::due(Clock::time_point now, st
     last_ = now;
     firtp_lcm::control_t message{};
     message.utime = utime;
+    message.session = session_;
     message.seq = ++seq_;
     message.feed_scale = feed_scale_;
     message.hold = hold_;

@@ -12,7 +12,7 @@ namespace firtp::host {
 
 class ControlSender {
 public:
-    ControlSender(double feed_scale, double max_feed_scale, Clock::duration period);
+    ControlSender(std::int64_t session, double feed_scale, double max_feed_scale, Clock::duration period);
 
     void set_feed_scale(double scale);  // clamped to 0 .. max (NaN ignored)
     void set_hold(bool on);
@@ -27,6 +27,7 @@ public:
     bool abort() const { return abort_; }
 
 private:
+    std::int64_t session_;
     double feed_scale_;
     double max_feed_scale_;
     Clock::duration period_;

@@ -55,7 +55,7 @@ struct Host::State {
           program_id(options.program_id != 0 ? options.program_id : wall_utime()),
           stream(program_id, std::ssize(program.blocks),
                  {options.initial_window, options.resend_timeout, options.max_resends}),
-          control(options.feed_scale, options.max_feed_scale, options.control_period),
+          control(program_id, options.feed_scale, options.max_feed_scale, options.control_period),
           axes(options.record_axis_states),
           watch(program_id, std::ssize(program.blocks)) {
         std::int64_t seq = 0;

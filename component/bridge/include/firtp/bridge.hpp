@@ -62,7 +62,9 @@ private:
     struct Streams;
     Streams* streams_ = nullptr;
     messages::SequenceChecker sequence_;
-    bool fault_ = false;               // a bad block: abort until a new program starts
+    bool fault_ = false;               // a bad block: abort until a new program starts; its error
+                                       // stays in the status (later refusals are its echoes)
+    std::int64_t control_session_ = 0;
     std::int64_t control_seq_ = 0;
     double feed_scale_ = 1.0;
     bool hold_ = false, abort_ = false;

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <memory>
 
-namespace firtp::cli {
+namespace firtp {
 
 // firtp.so next to this program's build (../lib/firtp.so), or $FIRTP_MODULE.
 std::filesystem::path default_module_path();
@@ -32,4 +32,4 @@ private:
     bool started_ = false;
 };
 
-}  // namespace firtp::cli
+}  // namespace firtp

@@ -1,8 +1,8 @@
-#include "recorded_states.hpp"
+#include <firtp/recorded_states.hpp>
 
 #include <stdexcept>
 
-namespace firtp::cli {
+namespace firtp {
 
 std::vector<AxisState> samples_from_axis_states(const std::vector<firtp_lcm::axis_state_t>& states, double period) {
     // A block starts in the period before the first one that reports its line.
@@ -33,4 +33,4 @@ std::vector<AxisState> samples_from_axis_states(const std::vector<firtp_lcm::axi
     return samples;
 }
 
-}  // namespace firtp::cli
+}  // namespace firtp

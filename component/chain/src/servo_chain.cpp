@@ -1,21 +1,28 @@
-#include "servo_chain.hpp"
+#include <firtp/servo_chain.hpp>
 
-#include "number_text.hpp"
 
 #include <firtp/text_cat.hpp>
 
 #include <firtp/hal_shim/runtime.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace firtp::cli {
+namespace firtp {
 namespace {
 
 namespace shim = firtp::hal_shim;
+
+// Shortest text that reads back as the same double: firtp.so gets exactly the planner's numbers.
+std::string number_text(double value) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::string(text, end);
+}
 
 void check(const shim::Status& status, const std::string& what) {
     if (!status.ok()) throw std::runtime_error(cat(what, ": ", status.message));
@@ -70,6 +77,7 @@ ServoChain::~ServoChain() {
     if (started_) shim::stop_threads();
     bridge_.reset();
     shim::unload_module("all");
+    shim::delete_thread("servo-thread");  // so another chain can be built in this process
 }
 
 void ServoChain::step() { check(shim::step(1), "servo period"); }
@@ -81,4 +89,4 @@ void ServoChain::start() {
 
 void ServoChain::poll() { bridge_->poll(); }
 
-}  // namespace firtp::cli
+}  // namespace firtp

@@ -1,0 +1,69 @@
+// The component side in this process (hal-shim + firtp.so + bridge) on memq://, stepped one
+// servo period at a time, with every message it sends collected.
+#pragma once
+
+#include <firtp/machine.hpp>
+#include <firtp/messages.hpp>
+#include <firtp/servo_chain.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace firtp::test {
+
+struct Chain {
+    std::unique_ptr<lcm::LCM> lcm = messages::open("memq://");
+    std::unique_ptr<ServoChain> chain;
+    std::vector<firtp_lcm::axis_state_t> states;
+    std::vector<firtp_lcm::status_t> statuses;
+    std::int64_t control_seq = 0;
+
+    explicit Chain(const MachineConfig& machine) {
+        chain = std::make_unique<ServoChain>(*lcm, machine, default_module_path());
+        messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Chain::on_state, this));
+        messages::keep_everything(lcm->subscribe(messages::status_channel, &Chain::on_status, this));
+    }
+    void on_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* m) { states.push_back(*m); }
+    void on_status(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::status_t* m) { statuses.push_back(*m); }
+
+    void publish(const firtp_lcm::block_t& block) { lcm->publish(messages::block_channel, &block); }
+    void control(double feed, bool hold, bool abort, std::int64_t session = 1) {
+        firtp_lcm::control_t c{};
+        c.session = session;
+        c.seq = ++control_seq;
+        c.feed_scale = feed;
+        c.hold = hold;
+        c.abort = abort;
+        lcm->publish(messages::control_channel, &c);
+    }
+    // Delivers what was published, runs `periods` servo periods and delivers their messages.
+    void run(int periods) {
+        for (int k = 0; k < periods; ++k) {
+            while (lcm->handleTimeout(0) > 0) {
+            }
+            chain->step();
+            chain->poll();
+        }
+        while (lcm->handleTimeout(0) > 0) {
+        }
+    }
+    const firtp_lcm::status_t& status() const { return statuses.back(); }
+    AxisVector position() const {
+        AxisVector p = AxisVector::Zero();
+        for (int a = 0; a < max_axes; ++a) p[a] = states.back().position[a];
+        return p;
+    }
+};
+
+inline firtp_lcm::block_t block_message(double x, double y, std::int64_t program, std::int64_t seq, int line,
+                                        double feed = 100.0) {
+    Block b;
+    b.target[0] = x;
+    b.target[1] = y;
+    b.feed = feed;
+    b.tolerance = 0.05;
+    b.line = line;
+    return messages::to_message(b, program, seq, 0);
+}
+
+}  // namespace firtp::test
