@@ -16,6 +16,8 @@ struct Golden {
     const char* ini;  // "" = the built-in machine
 };
 
+void PrintTo(const Golden& g, std::ostream* out) { *out << g.log; }
+
 class Replay : public ::testing::TestWithParam<Golden> {};
 
 template <class T>
