@@ -28,7 +28,9 @@ int serve_command(std::span<const std::string> args) {
     const MachineConfig machine = load_machine_config(options.plan);
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
-    firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()));
+    ChainSettings settings;
+    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.4);  // 40 % of the servo period
+    firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
     chain.start();

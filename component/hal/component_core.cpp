@@ -124,7 +124,11 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
                 accept(pin, false);
                 ack_ = true;
             }
+            // At least one block a period; more while the planning budget lasts.
+            const bool budgeted = settings_.plan_budget_ns > 0 && settings_.clock_ns != nullptr;
+            const std::int64_t begin = budgeted ? settings_.clock_ns() : 0;
             for (int k = 0; k < settings_.max_blocks_per_period && interpolator_.free() > 0 &&
+                            (k == 0 || !budgeted || settings_.clock_ns() - begin < settings_.plan_budget_ns) &&
                             next_record(source, record);
                  ++k)
                 accept(record, true);

@@ -32,6 +32,8 @@ struct ComponentSettings {
     int axes = 3;
     std::size_t queue = 1024;            // blocks the interpolator holds
     int max_blocks_per_period = 32;      // stream records planned per period at most
+    std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
+    std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
     double default_tolerance = 0.05;     // for pin blocks whose tolerance is 0
     double max_feed_scale = 2.0;
 };

@@ -1,7 +1,8 @@
 // firtp: FIR-filter corner smoothing as a LinuxCNC-style HAL component.
 //
 //   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
-//                [period_ns=1000000] [queue=1024] [max_blocks=32] [block_key=K] [state_key=K]
+//                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=0] [block_key=K]
+//                [state_key=K]
 //                [stream_depth=4096]
 //   addf firtp.update servo-thread
 //
@@ -46,6 +47,8 @@ static char* meaning = nullptr;
 RTAPI_MP_STRING(meaning, "what the tolerance bounds: corner (closest approach to the corner point) or contour");
 static long period_ns = 1000000;
 RTAPI_MP_LONG(period_ns, "period of the thread firtp.update runs in, ns");
+static int plan_budget_us = 0;
+RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (0: up to max_blocks)");
 static int queue = 1024;
 RTAPI_MP_INT(queue, "blocks the planner holds at once");
 static int max_blocks = 32;
@@ -219,6 +222,8 @@ firtp::ComponentSettings settings_from_parameters() {
     s.axes = axes;
     s.queue = queue > 0 ? static_cast<std::size_t>(queue) : 0;
     s.max_blocks_per_period = max_blocks;
+    s.plan_budget_ns = static_cast<std::int64_t>(plan_budget_us) * 1000;
+    s.clock_ns = [] { return static_cast<std::int64_t>(rtapi_get_time()); };
     s.default_tolerance = number(tolerance, 0.05);
     return s;
 }

@@ -120,7 +120,6 @@ bool Bridge::component_idle() const {
 
 void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* m) {
     using Verdict = messages::SequenceChecker::Verdict;
-    status_due_ = true;
     if (const auto why = messages::validate(*m)) {
         ++rejected_;
         report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");

@@ -29,7 +29,7 @@ void check(const shim::Status& status, const std::string& what) {
 }
 
 // loadrt arguments that give firtp.so exactly the machine's planner settings.
-std::vector<std::string> module_arguments(const MachineConfig& machine) {
+std::vector<std::string> module_arguments(const MachineConfig& machine, const ChainSettings& settings) {
     const PlannerParameters p = machine.planner_parameters();
     std::vector<std::string> args{
         cat("axes=", std::to_string(machine.limits.axes)),
@@ -37,6 +37,9 @@ std::vector<std::string> module_arguments(const MachineConfig& machine) {
         cat("tolerance=", number_text(machine.default_tolerance)),
         cat("meaning=", p.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner"),
         cat("period_ns=", std::to_string(std::llround(p.period * 1e9))),
+        cat("queue=", std::to_string(settings.queue)),
+        cat("max_blocks=", std::to_string(settings.max_blocks)),
+        cat("plan_budget_us=", std::to_string(settings.plan_budget_us)),
     };
     for (int i = 0; i < p.filters.stages; ++i)
         args.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
@@ -52,14 +55,15 @@ std::filesystem::path default_module_path() {
     return error ? std::filesystem::path("firtp.so") : self.parent_path().parent_path() / "lib" / "firtp.so";
 }
 
-ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module) {
+ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
+                       const ChainSettings& settings) {
     const long period_ns = std::lround(machine.period * 1e9);
     check(shim::load_module("threads", {"name1=servo-thread", cat("period1=", std::to_string(period_ns))}),
           "creating the servo thread");
     if (!std::filesystem::exists(module))
         throw std::runtime_error(cat("the firtp HAL component '", module.string(),
                                      "' does not exist (build it, or give --module / $FIRTP_MODULE)"));
-    check(shim::load_module(module.string(), module_arguments(machine)), cat("loadrt ", module.string()));
+    check(shim::load_module(module.string(), module_arguments(machine, settings)), cat("loadrt ", module.string()));
     BridgeOptions options;
     options.axes = machine.limits.axes;
     options.period = machine.period;
@@ -88,5 +92,10 @@ void ServoChain::start() {
 }
 
 void ServoChain::poll() { bridge_->poll(); }
+
+long ServoChain::update_time_ns() const {
+    shim::Value value;
+    return shim::get_value("firtp.update.time", value).ok() ? static_cast<long>(value.as_double()) : -1;
+}
 
 }  // namespace firtp

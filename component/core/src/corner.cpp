@@ -10,7 +10,8 @@ namespace {
 
 constexpr int grid_points = 8;
 constexpr int refine_steps = 16;  // brackets shrink to 0.618^16 = 5e-4 of a grid step (a coarser t* only makes Tk smaller)
-constexpr int phase_steps = 12;   // sampling phase: 0.618^12 = 3e-3 of a period; the chord varies smoothly with it
+constexpr int phase_grid = 8;     // sampling phase: grid of 1/8 period,
+constexpr int phase_steps = 12;   // then 0.618^12 = 3e-3 of a grid step
 constexpr double golden = 0.6180339887498949;
 constexpr double phase_margin = 1e-5;  // of epsilon, for maxima found by search (sampling phase, contour)
 constexpr double overlap_resolution = 5e-7;  // s; Tk is rounded down to this
@@ -83,8 +84,8 @@ double bisect_overlap(E&& error, double epsilon, double Tk_max) {
 }  // namespace
 
 AxisVector CornerModel::offset(double t, double Tk) const {
-    const double s_in = chain->pulse(t + in_tv, in_tv).position;
-    const double s_out = chain->pulse(t - (chain->delay() - Tk), out_tv).position;
+    const double s_in = chain->pulse_position(t + in_tv, in_tv);
+    const double s_out = chain->pulse_position(t - (chain->delay() - Tk), out_tv);
     return out_delta * s_out - in_delta * (1.0 - s_in);
 }
 
@@ -101,7 +102,9 @@ double CornerModel::sampled_corner_error(double Tk, double period) const {
         const double a = t - phase * period;
         return distance_to_segment(corner, offset(a, Tk), offset(a + period, Tk));
     };
-    return std::max({chord(0.0), chord(1.0), golden_section(chord, 0.0, 1.0, -1.0, phase_steps).second});
+    // Not unimodal when the overlap is shorter than a period (the nearest point of the chord
+    // jumps to an end): grid first, then refine.
+    return extremum(chord, 0.0, 1.0, -1.0, phase_grid, phase_steps).second;
 }
 
 double CornerModel::contour_error(double Tk) const {

@@ -13,11 +13,19 @@ namespace firtp {
 // firtp.so next to this program's build (../lib/firtp.so), or $FIRTP_MODULE.
 std::filesystem::path default_module_path();
 
+// firtp.so settings beyond the machine's (loadrt firtp queue=... max_blocks=...).
+struct ChainSettings {
+    int queue = 1024;      // blocks the component holds
+    int max_blocks = 32;   // stream blocks planned per servo period at most
+    int plan_budget_us = 0;  // and only within this planning time (0: no limit, for stepped runs)
+};
+
 class ServoChain {
 public:
     // Loads firtp.so with the machine's settings, creates the bridge and nets them. Throws
     // std::runtime_error naming the step that failed.
-    ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module);
+    ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
+               const ChainSettings& settings = {});
     ~ServoChain();
     ServoChain(const ServoChain&) = delete;
     ServoChain& operator=(const ServoChain&) = delete;
@@ -26,6 +34,8 @@ public:
     void start();  // or: the servo thread on the real-time clock
     void poll();   // the bridge's non-real-time work: axis states and status out
     Bridge& bridge() { return *bridge_; }
+    // Last run time of firtp.update, ns (hal-shim's firtp.update.time).
+    long update_time_ns() const;
 
 private:
     std::unique_ptr<Bridge> bridge_;

@@ -37,6 +37,7 @@ public:
     // Normalised progress of one block whose velocity pulse has width tv and starts at t = 0:
     // S(t) = (R(t) - R(t - tv)) / tv, from 0 to 1 over [0, tv + Td]; derivatives likewise.
     StepSample pulse(double t, double tv) const;
+    double pulse_position(double t, double tv) const { return (position(t) - position(t - tv)) / tv; }
 
 private:
     static constexpr int max_pieces = 1 << max_stages;
