@@ -62,12 +62,13 @@ int main(int argc, char** argv) {
     chain.start();
 
     std::atomic<bool> done{false};
-    std::vector<long> update_ns;
+    std::atomic<bool> accepted_all{false};
+    std::vector<long> update_ns, moving_ns;  // while blocks stream in; then only moving
     std::thread component([&] {
         while (!done) {
             component_lcm->handleTimeout(1);
             chain.poll();
-            if (const long ns = chain.update_time_ns(); ns > 0) update_ns.push_back(ns);
+            if (const long ns = chain.update_time_ns(); ns > 0) (accepted_all ? moving_ns : update_ns).push_back(ns);
         }
     });
 
@@ -86,18 +87,25 @@ int main(int argc, char** argv) {
     const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     const host::Statistics stats = host.statistics();
     const std::size_t acknowledged = host.progress().acknowledged;
+    accepted_all = true;
+    for (const Clock::time_point until = Clock::now() + std::chrono::seconds(2); Clock::now() < until;) {
+        host.step();  // keep the host listening while the machine moves
+        host_lcm->handleTimeout(1);
+    }
     done = true;
     component.join();
 
-    std::sort(update_ns.begin(), update_ns.end());
-    const auto quantile = [&](double q) {
-        if (update_ns.empty()) return 0.0;
-        const auto i = static_cast<std::size_t>(q * static_cast<double>(update_ns.size() - 1));
-        return static_cast<double>(update_ns[i]) / 1e3;
+    struct Figures { double mean, median, p99, max; };
+    const auto figures = [](std::vector<long>& ns) {
+        std::sort(ns.begin(), ns.end());
+        const auto at = [&](double q) {
+            return ns.empty() ? 0.0 : static_cast<double>(ns[static_cast<std::size_t>(q * static_cast<double>(ns.size() - 1))]) / 1e3;
+        };
+        double sum = 0.0;
+        for (long v : ns) sum += static_cast<double>(v) / 1e3;
+        return Figures{ns.empty() ? 0.0 : sum / static_cast<double>(ns.size()), at(0.5), at(0.99), at(1.0)};
     };
-    double mean = 0.0;
-    for (long ns : update_ns) mean += static_cast<double>(ns) / 1e3;
-    mean = update_ns.empty() ? 0.0 : mean / static_cast<double>(update_ns.size());
+    const Figures streaming = figures(update_ns), moving = figures(moving_ns);
 
     std::printf("stream: %zu of %d blocks accepted in %.3f s = %.0f blocks/s over %s\n", acknowledged, blocks, seconds,
                 static_cast<double>(acknowledged) / seconds, url.c_str());
@@ -106,6 +114,9 @@ int main(int argc, char** argv) {
                 static_cast<long long>(stats.rejected), static_cast<long long>(stats.statuses));
     std::printf("firtp.update while streaming (up to %d blocks, 400 us planning, per 1 ms period): mean %.1f us, median %.1f us, "
                 "p99 %.1f us, max %.1f us over %zu samples\n",
-                max_blocks, mean, quantile(0.5), quantile(0.99), quantile(1.0), update_ns.size());
+                max_blocks, streaming.mean, streaming.median, streaming.p99, streaming.max, update_ns.size());
+    std::printf("firtp.update moving, bridge publishing every period: mean %.1f us, median %.1f us, p99 %.1f us, "
+                "max %.1f us over %zu samples\n",
+                moving.mean, moving.median, moving.p99, moving.max, moving_ns.size());
     return acknowledged == static_cast<std::size_t>(blocks) ? 0 : 1;
 }
