@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# firtp run (host -> LCM -> bridge -> firtp.so on a hal-shim servo thread -> LCM) must give the
+# samples of firtp plan, within 1e-9 mm, for every example program.
+set -euo pipefail
+firtp=$1 examples=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+check() {
+  local program=$1; shift
+  "$firtp" plan "$examples/$program" "$@" --csv "$work/plan.csv" > /dev/null
+  "$firtp" run "$examples/$program" "$@" --csv "$work/run.csv" > "$work/run.log"
+  python3 - "$work/plan.csv" "$work/run.csv" "$program" <<'PY'
+import csv, sys
+plan, run = (list(csv.reader(open(f))) for f in sys.argv[1:3])
+assert len(plan) == len(run), f"{sys.argv[3]}: {len(run)} rows from run, {len(plan)} planned"
+worst = max(abs(float(a[i]) - float(b[i])) for a, b in zip(plan[1:], run[1:]) for i in (1, 2, 3))
+print(f"{sys.argv[3]}: {len(run) - 1} samples, largest difference {worst:g} mm")
+assert worst <= 1e-9, worst
+PY
+}
+check diamond.ngc --ini "$examples/diamond.ini"
+check corner90.ngc
+check steps.ngc
+check steps.ngc --tolerance-meaning contour --t1 0.03 --t2 0.011
