@@ -43,26 +43,47 @@ TEST(GcodeErrors, MissingFile) {
 }
 
 TEST(GcodeErrors, UnsupportedLetters) {
-    EXPECT_EQ(error("G1 F60 A1"), "t.ngc:1:8: word 'A' is not supported");
-    EXPECT_EQ(error("G1 F60 X1\nG1 X2 i1"), "t.ngc:2:7: word 'I' is not supported");
-    EXPECT_EQ(error("G1 F60 X1 R2"), "t.ngc:1:11: word 'R' is not supported");
+    EXPECT_EQ(error("E2 G1 F60 X1"), "t.ngc:1:1: word 'E' is not supported");
+    EXPECT_EQ(error("G1 F60 X1\nh1 G43"), "t.ngc:2:1: word 'H' is not supported");
+    EXPECT_EQ(error("G1 F60 X1 D2"), "t.ngc:1:11: word 'D' is not supported");
+    EXPECT_EQ(error("L2 G10 P1"), "t.ngc:1:1: word 'L' is not supported");
     EXPECT_EQ(error("T1 M6"), "t.ngc:1:1: word 'T' is not supported");
     EXPECT_EQ(error("S1000"), "t.ngc:1:1: word 'S' is not supported");
-    EXPECT_EQ(error("G64 P0.1 Q0"), "t.ngc:1:10: word 'Q' is not supported");
     EXPECT_EQ(error("O100 sub"), "t.ngc:1:1: word 'O' is not supported");
 }
 
+TEST(GcodeErrors, AxisWordsBeyondTheMachine) {
+    EXPECT_EQ(error("G1 F60 A1"), "t.ngc:1:8: axis word 'A' but the machine has 3 axes");
+    EXPECT_EQ(error("G1 F60 X1 w2"), "t.ngc:1:11: axis word 'W' but the machine has 3 axes");
+    firtp::MachineConfig four = firtp::default_machine();
+    four.limits.axes = 4;
+    EXPECT_EQ(error("G1 F60 A1 X1", four), "no error");
+    EXPECT_EQ(error("G1 F60 A1\nG0 B2", four), "t.ngc:2:4: axis word 'B' but the machine has 4 axes");
+    four.limits.axes = 9;
+    EXPECT_EQ(error("G1 F60 A1 B1 C1 U1 V1 W1", four), "no error");
+}
+
 TEST(GcodeErrors, UnsupportedCodes) {
-    EXPECT_EQ(error("G2 X1 Y1"), "t.ngc:1:1: G2 is not supported");
-    EXPECT_EQ(error("G1 F60 X1\n G02 X1"), "t.ngc:2:2: G2 is not supported");
+    EXPECT_EQ(error("G5 X1 Y1"), "t.ngc:1:1: G5 is not supported");
+    EXPECT_EQ(error("G1 F60 X1\n G05.1 X1"), "t.ngc:2:2: G5.1 is not supported");
     EXPECT_EQ(error("G38.2 Z-1"), "t.ngc:1:1: G38.2 is not supported");
     EXPECT_EQ(error("G1.5 X1"), "t.ngc:1:1: G1.5 is not supported");
     EXPECT_EQ(error("G1.25 X1"), "t.ngc:1:1: G1.25 is not supported");
     EXPECT_EQ(error("G-1 X1"), "t.ngc:1:1: G-1 is not supported");
     EXPECT_EQ(error("M3 S1"), "t.ngc:1:1: M3 is not supported");
     EXPECT_EQ(error("G1 F60 X1 M0"), "t.ngc:1:11: M0 is not supported");
-    EXPECT_EQ(error("G18"), "t.ngc:1:1: G18 is not supported: firtp plans in the XY plane only (G17)");
-    EXPECT_EQ(error("G17 G19"), "t.ngc:1:5: G19 is not supported: firtp plans in the XY plane only (G17)");
+    EXPECT_EQ(error("G93 G1 F1 X1"), "t.ngc:1:1: G93 is not supported");
+    EXPECT_EQ(error("G95"), "t.ngc:1:1: G95 is not supported");
+    EXPECT_EQ(error("G33 Z-1 K1"), "t.ngc:1:1: G33 is not supported");
+    EXPECT_EQ(error("G81 Z-1 R1"), "t.ngc:1:1: G81 is not supported");
+    EXPECT_EQ(error("G17.1"), "t.ngc:1:1: G17.1 is not supported");
+}
+
+TEST(GcodeErrors, PlanesArcModesFeedModeAndQAreAccepted) {
+    EXPECT_EQ(error("G18\nG19\nG17\nG90.1\nG91.1\nG94\nG64 P0.1 Q0.05\nG64 Q0\n"), "no error");
+    EXPECT_EQ(error("G18 G19"), "t.ngc:1:5: G18 and G19 are in the same modal group: use one per line");
+    EXPECT_EQ(error("G90.1 G91.1"), "t.ngc:1:7: G90.1 and G91.1 are in the same modal group: use one per line");
+    EXPECT_EQ(error("G90 G91.1 G94 G94"), "t.ngc:1:15: G94 appears twice on this line");
 }
 
 TEST(GcodeErrors, SameModalGroupTwice) {
@@ -108,10 +129,19 @@ TEST(GcodeErrors, BadCharactersAndComments) {
     EXPECT_EQ(error("G1 (a (b) ) X1"), "t.ngc:1:7: '(' inside a comment: comments do not nest");
 }
 
-TEST(GcodeErrors, PWord) {
-    EXPECT_EQ(error("G1 F60 X1 P0.1"), "t.ngc:1:11: P word without G64: only G64 takes P here");
-    EXPECT_EQ(error("G61 P1"), "t.ngc:1:5: P word without G64: only G64 takes P here");
+TEST(GcodeErrors, WordsWithNothingToUseThem) {
+    EXPECT_EQ(error("G1 F60 X1 P0.1"), "t.ngc:1:11: word 'P' with no G64, G2 or G3 to use it");
+    EXPECT_EQ(error("G61 P1"), "t.ngc:1:5: word 'P' with no G64, G2 or G3 to use it");
     EXPECT_EQ(error("G64 P-0.1"), "t.ngc:1:5: G64 P must not be negative");
+    EXPECT_EQ(error("G64 P0.1 Q-1"), "t.ngc:1:10: G64 Q must not be negative");
+    EXPECT_EQ(error("G61 Q1"), "t.ngc:1:5: word 'Q' with no G64 to use it");
+    EXPECT_EQ(error("G1 F60 X1 Q1"), "t.ngc:1:11: word 'Q' with no G64 to use it");
+    EXPECT_EQ(error("G1 F60 X1 I1"), "t.ngc:1:11: word 'I' with no G2 or G3 to use it");
+    EXPECT_EQ(error("G1 F60 X1\nG1 X2 R1 J1"), "t.ngc:2:7: word 'R' with no G2 or G3 to use it");
+    EXPECT_EQ(error("K1"), "t.ngc:1:1: word 'K' with no G2 or G3 to use it");
+    EXPECT_EQ(error("G2 F60 I1"), "t.ngc:1:8: word 'I' with no axis word: an arc needs its end point");
+    EXPECT_EQ(error("G2 F60 X1 I1 G64 P1"),
+              "t.ngc:1:18: word 'P' is used by both G64 and G2: put them on separate lines");
 }
 
 TEST(GcodeErrors, MotionAndFeed) {
@@ -130,7 +160,8 @@ TEST(GcodeErrors, MotionAndFeed) {
 }
 
 TEST(GcodeErrors, WordsAfterProgramEndOnItsLineAreChecked) {
-    EXPECT_EQ(error("M2 A1"), "t.ngc:1:4: word 'A' is not supported");
+    EXPECT_EQ(error("M2 A1"), "t.ngc:1:4: axis word 'A' but the machine has 3 axes");
+    EXPECT_EQ(error("M2 D1"), "t.ngc:1:4: word 'D' is not supported");
     EXPECT_EQ(error("M30\nA1"), "no error");
 }
 

@@ -43,6 +43,7 @@ T3 = 0.004
 MODES = 40  55.5
 TOLERANCE = 0.02
 TOLERANCE_MEANING = contour
+ARC_CHORD_TOLERANCE = 0.005
 )";
 
 std::string load_error(const std::string& text) {
@@ -70,6 +71,8 @@ TEST(Machine, DefaultMachine) {
     EXPECT_TRUE(m.mode_frequencies.empty());
     EXPECT_EQ(m.default_tolerance, 0.05);
     EXPECT_EQ(m.tolerance_meaning, firtp::ToleranceMeaning::corner_point);
+    EXPECT_EQ(m.arc_chord_tolerance, 0.001);
+    EXPECT_EQ(firtp::load_machine(IniFile::parse("[FIRTP]\nTOLERANCE = 0.1\n", "m.ini")).arc_chord_tolerance, 0.001);
 }
 
 TEST(Machine, DefaultFilterTimesFromLimits) {
@@ -105,6 +108,7 @@ TEST(Machine, LoadsSampleIniOverDefaults) {
     EXPECT_EQ(m.mode_frequencies[1], 55.5);
     EXPECT_EQ(m.default_tolerance, 0.02);
     EXPECT_EQ(m.tolerance_meaning, firtp::ToleranceMeaning::contour);
+    EXPECT_EQ(m.arc_chord_tolerance, 0.005);
 }
 
 TEST(Machine, HighestAxisSetsAxisCount) {
@@ -137,7 +141,8 @@ TEST(Machine, ValueErrorsNameFileLineAndKey) {
 
 TEST(Machine, FirtpSectionErrors) {
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 2\nT5 = 0.1\n"),
-              "mill.ini:3: [FIRTP]T5: unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING)");
+              "mill.ini:3: [FIRTP]T5: unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, "
+              "ARC_CHORD_TOLERANCE)");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 5\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 1.5\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 0\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
@@ -149,6 +154,12 @@ TEST(Machine, FirtpSectionErrors) {
     EXPECT_EQ(load_error("[FIRTP]\nTOLERANCE = -0.1\n"), "mill.ini:2: [FIRTP]TOLERANCE: '-0.1' must be positive");
     EXPECT_EQ(load_error("[FIRTP]\nTOLERANCE_MEANING = max\n"),
               "mill.ini:2: [FIRTP]TOLERANCE_MEANING: 'max' must be corner or contour");
+    EXPECT_EQ(load_error("[FIRTP]\nARC_CHORD_TOLERANCE = 0\n"),
+              "mill.ini:2: [FIRTP]ARC_CHORD_TOLERANCE: '0' must be positive");
+    EXPECT_EQ(load_error("[FIRTP]\nARC_CHORD_TOLERANCE = -0.01\n"),
+              "mill.ini:2: [FIRTP]ARC_CHORD_TOLERANCE: '-0.01' must be positive");
+    EXPECT_EQ(load_error("[FIRTP]\nARC_CHORD_TOLERANCE = 1um\n"),
+              "mill.ini:2: [FIRTP]ARC_CHORD_TOLERANCE: '1um' is not a number");
 }
 
 TEST(Machine, IgnoresUnknownKeysOutsideFirtp) {

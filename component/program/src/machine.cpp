@@ -64,11 +64,12 @@ std::vector<double> read_modes(const IniFile& ini, const IniFile::Entry& e) {
 }
 
 void read_firtp(const IniFile& ini, MachineConfig& m) {
-    static constexpr std::string_view known[] = {"STAGES", "T1", "T2", "T3", "T4",
-                                                 "MODES", "TOLERANCE", "TOLERANCE_MEANING"};
+    static constexpr std::string_view known[] = {"STAGES",    "T1", "T2", "T3", "T4", "MODES",
+                                                 "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE"};
     for (const IniFile::Entry* e : ini.section("FIRTP"))
         if (std::find(std::begin(known), std::end(known), e->key) == std::end(known))
-            fail(ini, *e, "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING)");
+            fail(ini, *e,
+                 "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, ARC_CHORD_TOLERANCE)");
 
     if (const auto stages = ini.number("FIRTP", "STAGES")) {
         if (*stages != std::floor(*stages) || *stages < 1 || *stages > max_stages)
@@ -83,6 +84,7 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
     }
     if (const IniFile::Entry* e = ini.find("FIRTP", "MODES")) m.mode_frequencies = read_modes(ini, *e);
     if (const auto tol = positive(ini, "FIRTP", "TOLERANCE")) m.default_tolerance = *tol;
+    if (const auto chord = positive(ini, "FIRTP", "ARC_CHORD_TOLERANCE")) m.arc_chord_tolerance = *chord;
     if (const IniFile::Entry* e = ini.find("FIRTP", "TOLERANCE_MEANING")) {
         std::string v = e->value;
         std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -112,6 +114,7 @@ PlannerParameters MachineConfig::planner_parameters() const {
     p.filters = filter_times();
     p.period = period;
     p.tolerance_meaning = tolerance_meaning;
+    p.limits = limits;
     return p;
 }
 
@@ -124,6 +127,7 @@ MachineConfig default_machine() {
     m.stages = 2;
     m.default_tolerance = 0.05;
     m.tolerance_meaning = ToleranceMeaning::corner_point;
+    m.arc_chord_tolerance = 0.001;
     return m;
 }
 

@@ -17,13 +17,14 @@ struct MachineConfig {
     std::vector<double> mode_frequencies;   // [FIRTP]MODES, Hz, space separated
     double default_tolerance = 0.05;        // [FIRTP]TOLERANCE, used by G64 without P
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // [FIRTP]TOLERANCE_MEANING corner|contour
+    double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
 
     FilterTimes filter_times() const;       // filter_times_from_limits(limits, stages, given_times, mode_frequencies)
     PlannerParameters planner_parameters() const;
 };
 
 // Built-in machine used when no INI is given: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3,
-// 1 ms servo period, two stages (T1 = 60 ms, T2 = 50 ms), 0.05 mm tolerance.
+// 1 ms servo period, two stages (T1 = 60 ms, T2 = 50 ms), 0.05 mm tolerance, 0.001 mm arc chords.
 MachineConfig default_machine();
 
 // Reads the keys above over default_machine(). Throws ConfigError naming file, line and key for a
