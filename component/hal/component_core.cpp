@@ -40,7 +40,7 @@ void ComponentCore::fail(ComponentError error) {
 
 void ComponentCore::drop_everything(const AxisVector& at) {
     interpolator_.reset(at);
-    planner_.reset(at);
+    planner_.reset(at, interpolator_.now_tick());
     aborting_ = false;
     halted_ = true;  // the interrupted program must not continue from here
 }
@@ -135,7 +135,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
         }
         interpolator_.tick(last_);
         if (interpolator_.take_flushed()) {
-            planner_.reset(interpolator_.rest_position());
+            planner_.reset(interpolator_.rest_position(), interpolator_.now_tick());
             aborting_ = false;
         }
     }

@@ -2,7 +2,7 @@
 //
 //   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
 //                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=0] [block_key=K]
-//                [state_key=K]
+//                [state_key=K] [max_velocity=V,V,..] [max_acceleration=A,..] [max_jerk=J,..]
 //                [stream_depth=4096]
 //   addf firtp.update servo-thread
 //
@@ -47,6 +47,12 @@ static char* meaning = nullptr;
 RTAPI_MP_STRING(meaning, "what the tolerance bounds: corner (closest approach to the corner point) or contour");
 static long period_ns = 1000000;
 RTAPI_MP_LONG(period_ns, "period of the thread firtp.update runs in, ns");
+static char* max_velocity = nullptr;
+RTAPI_MP_STRING(max_velocity, "per-axis velocity limits, units/s, comma separated (0: none)");
+static char* max_acceleration = nullptr;
+RTAPI_MP_STRING(max_acceleration, "per-axis acceleration limits, units/s^2, comma separated");
+static char* max_jerk = nullptr;
+RTAPI_MP_STRING(max_jerk, "per-axis jerk limits, units/s^3, comma separated");
 static int plan_budget_us = 0;
 RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (0: up to max_blocks)");
 static int queue = 1024;
@@ -168,6 +174,15 @@ void update(void*, long) {
 
 double number(const char* text, double fallback) { return text && *text ? std::strtod(text, nullptr) : fallback; }
 
+// "a,b,c" into field `limit` of the first axes (init only).
+void read_limits(const char* text, double firtp::AxisLimits::*limit, firtp::MachineLimits& limits) {
+    for (int a = 0; text && *text && a < firtp::max_axes; ++a) {
+        char* end = nullptr;
+        limits.axis[a].*limit = std::strtod(text, &end);
+        text = *end == ',' ? end + 1 : end;
+    }
+}
+
 int make_pins() {
     int r = 0;
     for (int a = 0; a < axes && r == 0; ++a) {
@@ -219,6 +234,10 @@ firtp::ComponentSettings settings_from_parameters() {
     s.planner.period = static_cast<double>(period_ns) * 1e-9;
     s.planner.tolerance_meaning = meaning && std::strcmp(meaning, "contour") == 0 ? firtp::ToleranceMeaning::contour
                                                                                  : firtp::ToleranceMeaning::corner_point;
+    s.planner.limits.axes = axes;
+    read_limits(max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
+    read_limits(max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
+    read_limits(max_jerk, &firtp::AxisLimits::max_jerk, s.planner.limits);
     s.axes = axes;
     s.queue = queue > 0 ? static_cast<std::size_t>(queue) : 0;
     s.max_blocks_per_period = max_blocks;

@@ -48,7 +48,7 @@ void BM_Tick(benchmark::State& state) {
     Planner planner(parameters, chain, AxisVector::Zero());
     auto refill = [&] {
         interpolator.reset(AxisVector::Zero());
-        planner.reset(AxisVector::Zero());
+        planner.reset(AxisVector::Zero(), interpolator.now_tick());
         for (const Block& b : blocks) planner.add(b, interpolator);
     };
     refill();
@@ -84,7 +84,7 @@ void BM_PlanBlock(benchmark::State& state) {
         if (next == blocks.size()) {
             state.PauseTiming();
             interpolator.reset(AxisVector::Zero());
-            planner.reset(AxisVector::Zero());
+            planner.reset(AxisVector::Zero(), interpolator.now_tick());
             next = 0;
             state.ResumeTiming();
         }

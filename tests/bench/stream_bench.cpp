@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
         if (!std::strcmp(argv[i], "--url")) url = argv[i + 1];
         if (!std::strcmp(argv[i], "--max-blocks")) max_blocks = std::atoi(argv[i + 1]);
     }
-    MachineConfig machine = default_machine();
-    machine.given_times = {0.02, 0.005};
+    // The built-in machine: filters from its limits (T1 = v/a = 60 ms, T2 = a/j = 50 ms).
+    const MachineConfig machine = default_machine();
 
     // Component side: its own LCM endpoint, the servo thread on the real-time clock.
     auto component_lcm = messages::open(url);

@@ -12,9 +12,11 @@ using test::block_message;
 
 namespace {
 
+// Short filters and no axis limits: these tests are about messages, not motion.
 MachineConfig machine() {
     MachineConfig m = default_machine();
     m.given_times = {0.02, 0.01};
+    m.limits = MachineLimits{};
     return m;
 }
 

@@ -114,7 +114,7 @@ TEST(TimeScale, AbortStopsDropsTheRestAndPlansAfreshFromThere) {
     EXPECT_GT(stopped[0], 0.0);
     EXPECT_LT(stopped[0], 30.0);
     EXPECT_NEAR(stopped[1], 0.0, 1e-12);  // on the first block's line
-    m.planner.reset(stopped);
+    m.planner.reset(stopped, m.interpolator.now_tick());
     m.interpolator.set_rate(1.0);
     m.samples.clear();
     m.points = {stopped};

@@ -43,6 +43,14 @@ std::vector<std::string> module_arguments(const MachineConfig& machine, const Ch
     };
     for (int i = 0; i < p.filters.stages; ++i)
         args.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
+    auto per_axis = [&](const char* name, double AxisLimits::*limit) {
+        std::string list;
+        for (int a = 0; a < p.limits.axes; ++a) list += cat(a ? "," : "", number_text(p.limits.axis[a].*limit));
+        args.push_back(cat(name, "=", list));
+    };
+    per_axis("max_velocity", &AxisLimits::max_velocity);
+    per_axis("max_acceleration", &AxisLimits::max_acceleration);
+    per_axis("max_jerk", &AxisLimits::max_jerk);
     return args;
 }
 

@@ -1,5 +1,7 @@
 #include <firtp/planner.hpp>
 
+#include <firtp/overlap.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,13 +31,100 @@ double seconds_between(std::int64_t tick_a, double offset_a, std::int64_t tick_b
 }  // namespace
 
 Planner::Planner(const PlannerParameters& parameters, const FirChain& chain, const AxisVector& start)
-    : parameters_(parameters), chain_(&chain) {
+    : parameters_(parameters), chain_(&chain), window_(chain, parameters) {
     last_.end = start;
+    window_.reset(start, 0);
 }
 
-void Planner::reset(const AxisVector& position) {
+void Planner::reset(const AxisVector& position, std::int64_t tick) {
     last_ = Last{};
     last_.end = position;
+    window_.reset(position, tick);
+}
+
+Planner::Start Planner::schedule(double tk, std::int64_t now) const {
+    // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
+    const double period = parameters_.period;
+    Start s{last_.end_tick, last_.end_offset + (chain_->delay() - tk), tk, false};
+    normalise(s.tick, s.offset, period);
+    if (tk == 0.0 && s.offset > 0.0) {
+        // A stop: rest until the next servo sample so that one sample lands exactly on the
+        // corner; otherwise the straight line between samples would cut it.
+        ++s.tick;
+        s.offset = 0.0;
+    }
+    if (s.tick < now) {
+        s = {now, 0.0, std::max(0.0, chain_->delay() - seconds_between(last_.end_tick, last_.end_offset, now, 0.0, period)), true};
+    }
+    return s;
+}
+
+double Planner::latest_overlap(std::int64_t now) const {
+    const double td = chain_->delay();
+    return std::clamp(td - seconds_between(last_.end_tick, last_.end_offset, now, 0.0, parameters_.period), 0.0, td);
+}
+
+// Several blocks may share a filter window (or limits must hold): try schedules on the samples.
+// Full overlap at full feed first; on shallow turns a lower feed before a shorter overlap (a
+// chorded curve keeps moving); else the largest overlap that holds. Tk = 0 always holds.
+Planner::Choice Planner::search_window(const AxisVector& delta, double length, double feed, double beta,
+                                       double epsilon, std::int64_t now) const {
+    const double tk_high = latest_overlap(now);
+    auto candidate = [&](double tk, double f) {
+        const Start s = schedule(tk, now);
+        return Candidate{delta, length / f, s.tick, s.offset};
+    };
+    constexpr int search_stride = 12;  // the quick search looks at every 12th sample
+    auto ok = [&](double tk, double f) { return window_.feasible(candidate(tk, f), search_stride); };
+    auto exact = [&](double tk, double f) { return window_.feasible(candidate(tk, f)); };
+    // The quick search may miss a limit between its samples: confirm the choice on every sample,
+    // else bisect the overlap with full checks below it, else lower the feed of a stop.
+    auto confirmed = [&](Choice choice) {
+        if (exact(choice.tk, choice.feed)) return choice;
+        if (choice.tk > 0.0 && exact(0.0, choice.feed)) {
+            double lo = 0.0, hi = choice.tk;
+            for (int i = 0; i < 8; ++i) (exact(0.5 * (lo + hi), choice.feed) ? lo : hi) = 0.5 * (lo + hi);
+            return Choice{lo, choice.feed};
+        }
+        double f_lo = min_feed_fraction, f_hi = 1.0;
+        if (!exact(0.0, choice.feed * f_lo)) return Choice{0.0, choice.feed};  // not the feed's doing
+        for (int i = 0; i < 10; ++i) (exact(0.0, choice.feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
+        return Choice{0.0, choice.feed * f_lo};
+    };
+    constexpr double shallow = 0.5;  // rad (about 30 degrees)
+    constexpr int steps = 14;
+    constexpr int bracket_steps = 8;  // below the estimate the bracket is estimate / 16 wide: / 256 more
+    // The two-block answer (Eq. 13/14 or the any-chain form) is close: the sampled one is a little
+    // smaller. Full overlap is worth a try only where it does not rule it out.
+    const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, tk_high);
+    if ((estimate >= tk_high || beta < shallow) && ok(tk_high, feed)) return confirmed({tk_high, feed});
+    if (beta < shallow && ok(tk_high, feed * min_feed_fraction)) {
+        double lo = min_feed_fraction, hi = 1.0;
+        for (int i = 0; i < steps; ++i) (ok(tk_high, feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+        return confirmed({tk_high, feed * lo});
+    }
+    // Bracket below the estimate, then bisect.
+    double lo = 0.0, hi = tk_high;
+    if (estimate > 0.0) {
+        if (estimate < tk_high && ok(estimate, feed)) lo = estimate;
+        else if (hi = std::min(hi, estimate), ok(estimate * (15.0 / 16.0), feed)) lo = estimate * (15.0 / 16.0);
+    }
+    if (lo > 0.0 || ok(0.0, feed)) {
+        for (int i = 0; i < bracket_steps; ++i) (ok(0.5 * (lo + hi), feed) ? lo : hi) = 0.5 * (lo + hi);
+        return confirmed({lo, feed});
+    }
+    // Even a stop breaks a limit: the block itself is too fast for the filters (short T).
+    double f_lo = min_feed_fraction, f_hi = 1.0;
+    for (int i = 0; i < steps; ++i) (ok(0.0, feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
+    return confirmed({0.0, feed * f_lo});
+}
+
+double Planner::feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const {
+    auto ok = [&](double f) { return window_.feasible({delta, length / f, now, 0.0}); };
+    if (ok(feed)) return feed;
+    double lo = min_feed_fraction, hi = 1.0;
+    for (int i = 0; i < 14; ++i) (ok(feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+    return feed * lo;
 }
 
 Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner, bool* has_corner) {
@@ -52,50 +141,50 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
 
     const double period = parameters_.period;
     const double td = chain_->delay();
-    const double tv = length / block.feed;  // Eq. 5
     const std::int64_t now = out.now_tick();
-
-    PlannedBlock planned;
-    planned.delta = delta;
-    planned.end = block.target;
-    planned.tv = tv;
-    planned.line = block.line;
-    planned.type = block.type;
-
-    Last next = last_;
-    next.end = block.target;
-    next.feed = block.feed;
-    next.termination = block.termination;
-    next.tolerance = block.tolerance;
-    next.line = block.line;
-    next.moving = true;
+    double feed = block.feed;
+    double tv = length / feed;  // Eq. 5
 
     CornerReport report;
     bool joined = false;
-    double tk = 0.0;
-    if (!last_.moving) {
-        planned.start_tick = now;  // from rest: start at once
-        planned.start_offset = 0.0;
-    } else {
+    Start start{now, 0.0, 0.0, false};  // from rest: at once
+    if (!last_.moving && window_.checks_limits()) {
+        // Even alone a pulse can break a limit: shorter than T1 - T2, it doubles the jerk F / (T1 T2).
+        feed = feed_from_rest(delta, length, feed, now);
+        tv = length / feed;
+    }
+    if (last_.moving) {
         const double beta = turn_angle(last_.run_delta, delta);
         report.line = last_.line;
         report.point = last_.end;
         report.beta = beta;
         report.epsilon = last_.tolerance;
         report.exact_stop = last_.termination == Termination::exact_stop;
-        // Equal feed, straight on, and the previous corner's overlap inside the last block: one pulse.
-        joined = !report.exact_stop && beta < collinear_angle &&
-                 std::abs(block.feed - last_.feed) <= 1e-12 * last_.feed && last_.run_tv >= last_.tk_in + period;
-        if (joined) {
-            tk = td;
-        } else if (!report.exact_stop) {
+        window_.set_corner_tolerance(last_.tolerance, !report.exact_stop);
+        const bool in_window = parameters_.fixed_overlap < 0.0 &&
+                               (last_.run_tv < td || tv < td || window_.checks_limits());
+        double tk = 0.0;
+        if (report.exact_stop) {
+            tk = 0.0;
+        } else if (in_window) {
+            const Choice choice = search_window(delta, length, feed, beta, last_.tolerance, now);
+            tk = choice.tk;
+            feed = choice.feed;
+            tv = length / feed;
+            report.tk_tolerance = tk;
+        } else {
+            // Equal feed, straight on, and the previous corner's overlap inside the last block: one pulse.
+            joined = beta < collinear_angle && std::abs(block.feed - last_.feed) <= 1e-12 * last_.feed &&
+                     last_.run_tv >= last_.tk_in + period;
             // Clamp (paper notes): this corner gets what the previous one left of the incoming
             // pulse, and at most half of the outgoing one, so no window holds three blocks. One
             // servo period more stays free: the sampled error bound looks that far past a window.
-            const double tk_max = std::clamp(
+            const double tk_max = joined ? td : std::clamp(
                 std::min({td, last_.run_tv + td - last_.tk_in - period, 0.5 * (tv + td - period)}), 0.0, td);
             const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
-            if (parameters_.fixed_overlap >= 0.0) {
+            if (joined) {
+                tk = td;
+            } else if (parameters_.fixed_overlap >= 0.0) {
                 tk = std::min(parameters_.fixed_overlap, tk_max);
                 report.tk_tolerance = parameters_.fixed_overlap;
             } else {
@@ -105,33 +194,35 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
                     report.tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
             }
         }
-        // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
-        planned.start_tick = last_.end_tick;
-        planned.start_offset = last_.end_offset + (td - tk);
-        normalise(planned.start_tick, planned.start_offset, period);
-        if (tk == 0.0 && planned.start_offset > 0.0) {
-            // A stop: rest until the next servo sample so that one sample lands exactly on the
-            // corner; otherwise the straight line between samples would cut it.
-            ++planned.start_tick;
-            planned.start_offset = 0.0;
-        }
-        if (planned.start_tick < now) {
-            planned.start_tick = now;
-            planned.start_offset = 0.0;
-            tk = std::max(0.0, td - seconds_between(last_.end_tick, last_.end_offset, now, 0.0, period));
-            joined = joined && tk == td;
-        }
-        report.tk = tk;
-        if (corner && !joined) {  // report-only
+        start = schedule(tk, now);
+        joined = joined && start.tk == td;
+        report.tk = start.tk;
+        if (corner && !joined && !report.exact_stop) {  // report-only
             const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
             report.predicted_error = parameters_.tolerance_meaning == ToleranceMeaning::contour
-                                         ? model.contour_error(tk)
-                                         : model.corner_error(tk);
+                                         ? model.contour_error(start.tk)
+                                         : model.corner_error(start.tk);
         }
     }
 
+    PlannedBlock planned;
+    planned.delta = delta;
+    planned.end = block.target;
+    planned.tv = tv;
+    planned.line = block.line;
+    planned.type = block.type;
+    planned.start_tick = start.tick;
+    planned.start_offset = start.offset;
     if (!out.push(planned)) return Result::queue_full;
+    window_.commit({delta, tv, start.tick, start.offset});
 
+    Last next = last_;
+    next.end = block.target;
+    next.feed = feed;
+    next.termination = block.termination;
+    next.tolerance = block.tolerance;
+    next.line = block.line;
+    next.moving = true;
     next.end_tick = planned.start_tick;
     next.end_offset = planned.start_offset + tv;
     normalise(next.end_tick, next.end_offset, period);
@@ -142,7 +233,7 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
     } else {
         next.run_delta = delta;
         next.run_tv = tv;
-        next.tk_in = tk;
+        next.tk_in = start.tk;
     }
     const bool formed_corner = last_.moving;
     last_ = next;

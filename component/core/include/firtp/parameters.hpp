@@ -23,14 +23,6 @@ enum class ToleranceMeaning {
     contour,       // largest distance from the programmed path
 };
 
-struct PlannerParameters {
-    FilterTimes filters;
-    double period = 0.001;  // servo period, s
-    ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;
-    double fixed_overlap = -1.0;        // Tk forced at every blended corner (s); < 0: from the tolerance
-    std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
-};
-
 struct AxisLimits {
     double max_velocity = 0.0;      // units/s
     double max_acceleration = 0.0;  // units/s^2
@@ -42,6 +34,15 @@ struct MachineLimits {
     int axes = 3;
     std::array<AxisLimits, 9> axis{};
     double max_linear_velocity = 0.0;  // [TRAJ]MAX_LINEAR_VELOCITY, 0 = not limited
+};
+
+struct PlannerParameters {
+    FilterTimes filters;
+    double period = 0.001;  // servo period, s
+    ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;
+    double fixed_overlap = -1.0;        // Tk forced at every blended corner (s); < 0: from the tolerance
+    std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
+    MachineLimits limits;               // held at every sample, overlaps included (0 = not limited)
 };
 
 // T1 from velocity/acceleration, T2 from acceleration/jerk (Eq. 4: a = v / T1, j = a / T2),

@@ -3,6 +3,10 @@
 // block's tolerance. Causal: a block is scheduled when it arrives, with no look-ahead, so a
 // stream can start moving at once; a block that arrives late only shortens Tk.
 //
+// Two long blocks (pulses of at least Td) and no axis limits: Eq. 13/14 (CornerModel). Short
+// blocks, where three or more may share a filter window, and machines with axis limits: the
+// candidate schedule is checked on its servo samples (SampledWindow), overlaps included.
+//
 // Neighbouring corners never share a filter window: Tk_(i-1) + Tk_i <= Tv_i + Td - period (notes,
 // with one servo period to spare for the sampled error bound), kept by giving each corner at most
 // what the previous corner left of the incoming block, and at most half of the outgoing block. Collinear blocks of equal feed join into one pulse (Tk = Td) when
@@ -15,6 +19,7 @@
 #include <firtp/fir_chain.hpp>
 #include <firtp/interpolator.hpp>
 #include <firtp/parameters.hpp>
+#include <firtp/sampled_window.hpp>
 #include <firtp/types.hpp>
 
 namespace firtp {
@@ -41,8 +46,8 @@ public:
     Result add(const Block& block, Interpolator& out, CornerReport* corner = nullptr,
                bool* has_corner = nullptr);
 
-    // After the interpolator was reset: plan from rest at `position`.
-    void reset(const AxisVector& position);
+    // After the interpolator was reset or flushed: plan from rest at `position` (filter-clock tick).
+    void reset(const AxisVector& position, std::int64_t tick = 0);
 
     const AxisVector& goal() const { return last_.end; }
 
@@ -61,8 +66,27 @@ private:
         double end_offset = 0.0;
     };
 
+    struct Start {
+        std::int64_t tick;
+        double offset;
+        double tk;   // the overlap this start gives
+        bool late;   // moved to now: the block came too late for the overlap asked for
+    };
+    struct Choice {
+        double tk;
+        double feed;
+    };
+    static constexpr double min_feed_fraction = 0.02;  // the window search lowers feed no further
+
+    Start schedule(double tk, std::int64_t now) const;
+    double latest_overlap(std::int64_t now) const;
+    Choice search_window(const AxisVector& delta, double length, double feed, double beta, double epsilon,
+                         std::int64_t now) const;
+    double feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const;
+
     PlannerParameters parameters_;
     const FirChain* chain_;
+    SampledWindow window_;
     Last last_;
 };
 

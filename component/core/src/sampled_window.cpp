@@ -1,0 +1,239 @@
+#include <firtp/sampled_window.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace firtp {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+double chord_distance(const AxisVector& point, const AxisVector& a, const AxisVector& b) {
+    const AxisVector ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double u = len2 > 0.0 ? std::clamp((point - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (point - a - u * ab).norm();
+}
+
+std::int64_t ceil_tick(std::int64_t tick, double offset) { return tick + (offset > 0.0 ? 1 : 0); }
+
+// Ticks a candidate must be checked at: its start to one window after its end, without the
+// middle of a long pulse where it moves alone along its own line.
+struct Ranges {
+    std::int64_t a0, a1, b0, b1;  // [a0, a1] and [b0, b1], b empty when b0 > b1
+};
+
+}  // namespace
+
+SampledWindow::SampledWindow(const FirChain& chain, const PlannerParameters& parameters, std::size_t max_corners)
+    : chain_(&chain), period_(parameters.period), meaning_(parameters.tolerance_meaning), limits_(parameters.limits),
+      window_ticks_(static_cast<std::int64_t>(std::ceil(chain.delay() / parameters.period)) + 2),
+      tail_(static_cast<std::size_t>(window_ticks_) + 1), prefix_(tail_.size() + 1),
+      corners_(std::max<std::size_t>(max_corners, 4)) {
+    for (int a = 0; a < limits_.axes; ++a) {
+        const AxisLimits& l = limits_.axis[a];
+        check_limits_ = check_limits_ || l.max_velocity > 0.0 || l.max_acceleration > 0.0 || l.max_jerk > 0.0;
+    }
+    reset(AxisVector::Zero(), 0);
+}
+
+void SampledWindow::reset(const AxisVector& position, std::int64_t tick) {
+    rest_ = position;
+    at_rest_ = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
+    tail_tick_ = tick;
+    for (Sample& s : tail_) s = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
+    finalized_tick_ = tick;
+    have_last_finalized_ = false;
+    corner_head_ = 0;
+    corner_count_ = 1;
+    cursor_ = 0;
+    corner(0) = {position, infinity, infinity, false, std::numeric_limits<std::int64_t>::max(), position};
+    sweep_tail();
+}
+
+void SampledWindow::sweep_tail() {
+    prefix_[0] = start_sweep();
+    prefix_valid_ = 1;
+}
+
+const SampledWindow::Sweep& SampledWindow::prefix(std::size_t i) const {
+    for (; prefix_valid_ <= i; ++prefix_valid_) {
+        prefix_[prefix_valid_] = prefix_[prefix_valid_ - 1];
+        const_cast<SampledWindow*>(this)->visit(prefix_[prefix_valid_], tail_[prefix_valid_ - 1].position, false);
+    }
+    return prefix_[i];
+}
+
+void SampledWindow::set_corner_tolerance(double epsilon, bool bound) {
+    Corner& c = corner(corner_count_ - 1);
+    c.epsilon = epsilon;
+    c.bound = bound && std::isfinite(epsilon);
+}
+
+const SampledWindow::Sample& SampledWindow::committed(std::int64_t tick) const {
+    const std::int64_t i = tick - tail_tick_;
+    if (i >= 0 && i < static_cast<std::int64_t>(tail_.size())) return tail_[static_cast<std::size_t>(i)];
+    return at_rest_;
+}
+
+SampledWindow::Sample SampledWindow::with(const Candidate& c, std::int64_t tick, const Sample& base) const {
+    const double t = static_cast<double>(tick - c.start_tick) * period_ - c.start_offset;
+    if (t <= 0.0) return base;
+    const StepSample s = chain_->pulse(t, c.tv);
+    return {base.position + c.delta * s.position, base.velocity + c.delta * s.velocity,
+            base.acceleration + c.delta * s.acceleration, base.jerk + c.delta * s.jerk};
+}
+
+bool SampledWindow::within_limits(const Sample& s) const {
+    constexpr double slack = 1.0 + 1e-9;
+    for (int a = 0; a < limits_.axes; ++a) {
+        const AxisLimits& l = limits_.axis[a];
+        if (l.max_velocity > 0.0 && std::abs(s.velocity[a]) > l.max_velocity * slack) return false;
+        if (l.max_acceleration > 0.0 && std::abs(s.acceleration[a]) > l.max_acceleration * slack) return false;
+        if (l.max_jerk > 0.0 && std::abs(s.jerk[a]) > l.max_jerk * slack) return false;
+    }
+    return true;
+}
+
+double SampledWindow::path_distance(const AxisVector& p, std::size_t cursor, const AxisVector& candidate_delta) const {
+    double best = infinity;
+    const std::size_t from = cursor > 0 ? cursor - 1 : 0, to = std::min(corner_count_, cursor + 3);
+    for (std::size_t i = from; i < to; ++i) {
+        const Corner& c = corner(i);
+        // The last junction's segment is the candidate's, not yet committed.
+        const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
+        best = std::min(best, chord_distance(p, c.point, end));
+    }
+    return best;
+}
+
+SampledWindow::Sweep SampledWindow::start_sweep() const {
+    Sweep w{cursor_, {infinity, infinity, infinity}, last_finalized_, have_last_finalized_};
+    for (std::size_t j = 0; j < 3; ++j)
+        if (cursor_ + j < corner_count_) w.closest[j] = corner(cursor_ + j).best;
+    return w;
+}
+
+bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep) {
+    if (w.chained)
+        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
+            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.previous, p));
+    if (keep)
+        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
+    bool ok = true;
+    // The tool has passed a junction once the next one is nearer.
+    while (w.cursor + 1 < corner_count_ &&
+           (p - corner(w.cursor + 1).point).squaredNorm() < (p - corner(w.cursor).point).squaredNorm()) {
+        const Corner& passed = corner(w.cursor);
+        if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
+        w.closest[0] = w.closest[1];
+        w.closest[1] = w.closest[2];
+        w.closest[2] = w.cursor + 3 < corner_count_ ? corner(w.cursor + 3).best : infinity;
+        ++w.cursor;
+    }
+    w.previous = p;
+    w.chained = true;
+    return ok;
+}
+
+bool SampledWindow::check_sample(Sweep& w, const Sample& s, double contour_epsilon,
+                                 const AxisVector& candidate_delta) const {
+    if (check_limits_ && !within_limits(s)) return false;
+    if (meaning_ == ToleranceMeaning::contour && std::isfinite(contour_epsilon) &&
+        path_distance(s.position, w.cursor, candidate_delta) > contour_epsilon)
+        return false;
+    return const_cast<SampledWindow*>(this)->visit(w, s.position, false);  // keep = false: no writes
+}
+
+bool SampledWindow::feasible(const Candidate& c, int stride) const {
+    const std::int64_t start = ceil_tick(c.start_tick, c.start_offset);
+    const double end_time = static_cast<double>(c.start_tick) * period_ + c.start_offset + c.tv;
+    const auto end = static_cast<std::int64_t>(std::floor(end_time / period_));
+    Ranges r{tail_tick_, end + window_ticks_, 1, 0};
+    if (end - start > 2 * window_ticks_) r = {tail_tick_, start + window_ticks_, end - 1, end + window_ticks_};
+
+    // Tightest tolerance among the junctions the samples can still approach.
+    double contour_epsilon = infinity;
+    for (std::size_t i = cursor_ > 0 ? cursor_ - 1 : 0; i < corner_count_; ++i)
+        if (corner(i).bound) contour_epsilon = std::min(contour_epsilon, corner(i).epsilon);
+
+    // Committed samples before the candidate starts were checked when they were committed: start
+    // from the sweep state there.
+    const std::int64_t skip = std::clamp<std::int64_t>(start - 1 - tail_tick_, 0, static_cast<std::int64_t>(tail_.size()));
+    Sweep w = prefix(static_cast<std::size_t>(skip));
+    for (std::int64_t k = r.a0 + skip; k <= r.a1; k = k + stride <= r.a1 || k == r.a1 ? k + stride : r.a1) {
+        if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
+        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta)) return false;
+    }
+    w.chained = false;  // the middle of a long pulse is skipped
+    for (std::int64_t k = r.b0; k <= r.b1; k = k + stride <= r.b1 || k == r.b1 ? k + stride : r.b1)
+        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta)) return false;
+    // At rest on the last point: what is left must be within tolerance too.
+    if (meaning_ == ToleranceMeaning::corner_point)
+        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
+            if (corner(w.cursor + j).bound && w.closest[j] > corner(w.cursor + j).epsilon) return false;
+    return true;
+}
+
+void SampledWindow::finalize_until(std::int64_t tick) {
+    // Release junctions the tool has passed and no later sample can approach.
+    while (corner_count_ > 1 && cursor_ > 0 && corner(0).release_tick < tick) {
+        corner_head_ = (corner_head_ + 1) % corners_.size();
+        --corner_count_;
+        --cursor_;
+    }
+    finalized_tick_ = tick;
+}
+
+void SampledWindow::commit(const Candidate& c) {
+    const std::int64_t start = ceil_tick(c.start_tick, c.start_offset);
+    const double end_time = static_cast<double>(c.start_tick) * period_ + c.start_offset + c.tv;
+    const auto end = static_cast<std::int64_t>(std::ceil(end_time / period_));
+
+    // Samples before the candidate's end can no longer change: fold them into the junctions.
+    Sweep w = start_sweep();
+    auto fold = [&](std::int64_t from, std::int64_t to) {
+        for (std::int64_t k = from; k < to; ++k) {
+            if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
+            visit(w, with(c, k, committed(k)).position, true);
+        }
+    };
+    if (end - start > 2 * window_ticks_) {
+        fold(tail_tick_, start + window_ticks_);
+        w.chained = false;
+        fold(end - 1, end);
+    } else {
+        fold(tail_tick_, end);
+    }
+    cursor_ = w.cursor;
+    last_finalized_ = w.previous;
+    have_last_finalized_ = w.chained;
+
+    // The new tail, rewritten in place: entry i reads the old entry (end - tail_tick_) + i >= i.
+    for (std::size_t i = 0; i < tail_.size(); ++i) {
+        const std::int64_t k = end + static_cast<std::int64_t>(i);
+        tail_[i] = with(c, k, committed(k));
+    }
+    tail_tick_ = end;
+    rest_ += c.delta;
+    at_rest_.position = rest_;
+
+    // The junction where this pulse started stays reachable until its window ends; the one at its
+    // end starts the next segment.
+    Corner& from = corner(corner_count_ - 1);
+    from.release_tick = end + window_ticks_;
+    from.segment_end = from.point + c.delta;
+    if (corner_count_ == corners_.size()) {  // full: forget the oldest
+        corner_head_ = (corner_head_ + 1) % corners_.size();
+        --corner_count_;
+        if (cursor_ > 0) --cursor_;
+    }
+    ++corner_count_;
+    corner(corner_count_ - 1) = {rest_, infinity, infinity, false, std::numeric_limits<std::int64_t>::max(), rest_};
+    finalize_until(end);
+    sweep_tail();
+}
+
+}  // namespace firtp
