@@ -29,7 +29,7 @@ int serve_command(std::span<const std::string> args) {
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
     ChainSettings settings;
-    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.4);  // 40 % of the servo period
+    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // half the servo period
     firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);

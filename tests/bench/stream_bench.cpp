@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     ChainSettings settings;
     settings.queue = blocks + 16;  // the stream is measured, not how fast the machine cuts
     settings.max_blocks = max_blocks;
-    settings.plan_budget_us = 400;  // as firtp serve: 40 % of the period
+    settings.plan_budget_us = 500;  // as firtp serve: half the period
     ServoChain chain(*component_lcm, machine, default_module_path(), settings);
     chain.start();
 
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
     std::printf("        published %lld (resends %lld), refused %lld, status messages %lld\n",
                 static_cast<long long>(stats.blocks_published), static_cast<long long>(stats.go_backs),
                 static_cast<long long>(stats.rejected), static_cast<long long>(stats.statuses));
-    std::printf("firtp.update while streaming (up to %d blocks, 400 us planning, per 1 ms period): mean %.1f us, median %.1f us, "
+    std::printf("firtp.update while streaming (up to %d blocks, 500 us planning, per 1 ms period): mean %.1f us, median %.1f us, "
                 "p99 %.1f us, max %.1f us over %zu samples\n",
                 max_blocks, streaming.mean, streaming.median, streaming.p99, streaming.max, update_ns.size());
     std::printf("firtp.update moving, bridge publishing every period: mean %.1f us, median %.1f us, p99 %.1f us, "

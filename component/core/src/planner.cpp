@@ -87,7 +87,7 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
             return Choice{lo, choice.feed};
         }
         double f_lo = min_feed_fraction, f_hi = 1.0;
-        if (!exact(0.0, choice.feed * f_lo)) return Choice{0.0, choice.feed};  // not the feed's doing
+        while (f_lo > 1e-3 && !exact(0.0, choice.feed * f_lo)) f_hi = f_lo, f_lo *= 0.25;  // never the unchecked feed
         for (int i = 0; i < 10; ++i) (exact(0.0, choice.feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
         return Choice{0.0, choice.feed * f_lo};
     };
@@ -115,14 +115,25 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
     }
     // Even a stop breaks a limit: the block itself is too fast for the filters (short T).
     double f_lo = min_feed_fraction, f_hi = 1.0;
+    while (f_lo > 1e-3 && !ok(0.0, feed * f_lo)) f_hi = f_lo, f_lo *= 0.25;
     for (int i = 0; i < steps; ++i) (ok(0.0, feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
     return confirmed({0.0, feed * f_lo});
 }
 
+double Planner::feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const {
+    const Start s = schedule(0.0, now);
+    return lowest_needed_feed([&](double f) { return window_.feasible({delta, length / f, s.tick, s.offset}); }, feed);
+}
+
 double Planner::feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const {
-    auto ok = [&](double f) { return window_.feasible({delta, length / f, now, 0.0}); };
+    return lowest_needed_feed([&](double f) { return window_.feasible({delta, length / f, now, 0.0}); }, feed);
+}
+
+template <class Feasible>
+double Planner::lowest_needed_feed(Feasible&& ok, double feed) const {
     if (ok(feed)) return feed;
     double lo = min_feed_fraction, hi = 1.0;
+    while (lo > 1e-3 && !ok(feed * lo)) hi = lo, lo *= 0.25;
     for (int i = 0; i < 14; ++i) (ok(feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
     return feed * lo;
 }
@@ -166,6 +177,10 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
         double tk = 0.0;
         if (report.exact_stop) {
             tk = 0.0;
+            if (window_.checks_limits()) {  // after a stop only the feed can keep the limits
+                feed = feed_after_stop(delta, length, feed, now);
+                tv = length / feed;
+            }
         } else if (in_window) {
             const Choice choice = search_window(delta, length, feed, beta, last_.tolerance, now);
             tk = choice.tk;

@@ -61,7 +61,8 @@ void SampledWindow::sweep_tail() {
 const SampledWindow::Sweep& SampledWindow::prefix(std::size_t i) const {
     for (; prefix_valid_ <= i; ++prefix_valid_) {
         prefix_[prefix_valid_] = prefix_[prefix_valid_ - 1];
-        const_cast<SampledWindow*>(this)->visit(prefix_[prefix_valid_], tail_[prefix_valid_ - 1].position, false);
+        const_cast<SampledWindow*>(this)->visit(prefix_[prefix_valid_], tail_[prefix_valid_ - 1].position, false,
+                                                AxisVector::Zero());
     }
     return prefix_[i];
 }
@@ -116,16 +117,21 @@ SampledWindow::Sweep SampledWindow::start_sweep() const {
     return w;
 }
 
-bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep) {
+bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta) {
     if (w.chained)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
             w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.previous, p));
     if (keep)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
     bool ok = true;
-    // The tool has passed a junction once the next one is nearer.
-    while (w.cursor + 1 < corner_count_ &&
-           (p - corner(w.cursor + 1).point).squaredNorm() < (p - corner(w.cursor).point).squaredNorm()) {
+    // The tool has passed a junction once the segment after it is nearer than the one before (the
+    // last junction's segment is the candidate's).
+    auto segment_distance = [&](std::size_t i) {
+        const Corner& c = corner(i);
+        const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
+        return chord_distance(p, c.point, end);
+    };
+    while (w.cursor + 1 < corner_count_ && segment_distance(w.cursor + 1) < segment_distance(w.cursor)) {
         const Corner& passed = corner(w.cursor);
         if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
         w.closest[0] = w.closest[1];
@@ -144,7 +150,7 @@ bool SampledWindow::check_sample(Sweep& w, const Sample& s, double contour_epsil
     if (meaning_ == ToleranceMeaning::contour && std::isfinite(contour_epsilon) &&
         path_distance(s.position, w.cursor, candidate_delta) > contour_epsilon)
         return false;
-    return const_cast<SampledWindow*>(this)->visit(w, s.position, false);  // keep = false: no writes
+    return const_cast<SampledWindow*>(this)->visit(w, s.position, false, candidate_delta);  // no writes
 }
 
 bool SampledWindow::feasible(const Candidate& c, int stride) const {
@@ -197,7 +203,7 @@ void SampledWindow::commit(const Candidate& c) {
     auto fold = [&](std::int64_t from, std::int64_t to) {
         for (std::int64_t k = from; k < to; ++k) {
             if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
-            visit(w, with(c, k, committed(k)).position, true);
+            visit(w, with(c, k, committed(k)).position, true, c.delta);
         }
     };
     if (end - start > 2 * window_ticks_) {

@@ -83,6 +83,10 @@ private:
     Choice search_window(const AxisVector& delta, double length, double feed, double beta, double epsilon,
                          std::int64_t now) const;
     double feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const;
+    double feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const;
+    // The highest feed (a fraction of `feed`, down to 0.1 %) that `ok` accepts.
+    template <class Feasible>
+    double lowest_needed_feed(Feasible&& ok, double feed) const;
 
     PlannerParameters parameters_;
     const FirChain* chain_;

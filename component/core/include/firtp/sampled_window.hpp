@@ -80,7 +80,7 @@ private:
     Sweep start_sweep() const;
     // Takes the sample at p; false when a junction the tool passed was not approached within its
     // tolerance. With `keep`, passed junctions keep their closest approach for good.
-    bool visit(Sweep& w, const AxisVector& p, bool keep);
+    bool visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta);
     bool check_sample(Sweep& w, const Sample& s, double contour_epsilon, const AxisVector& candidate_delta) const;
     void sweep_tail();  // restarts prefix_ from the finalized state
     const Sweep& prefix(std::size_t i) const;  // extends prefix_ to entry i

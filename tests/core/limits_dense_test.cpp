@@ -1,0 +1,150 @@
+// Axis limits at every sample, overlaps included; dense paths (many blocks in one filter window)
+// within tolerance without the feed collapsing. Measured on the output.
+#include "support/reference.hpp"
+
+#include <firtp/measure.hpp>
+#include <firtp/trajectory.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <cstdio>
+#include <random>
+
+using namespace firtp;
+using firtp::test::xyz;
+
+namespace {
+
+Block line_to(const AxisVector& target, double feed, double tolerance, std::int64_t line) {
+    Block b;
+    b.target = target;
+    b.feed = feed;
+    b.tolerance = tolerance;
+    b.line = line;
+    return b;
+}
+
+MachineLimits limits(double v, double a, double j) {
+    MachineLimits l;
+    l.axes = 3;
+    for (int i = 0; i < 3; ++i) l.axis[i] = {v, a, j};
+    return l;
+}
+
+// Largest |value| / limit over every sample and axis (analytic samples).
+double worst_ratio(const std::vector<AxisState>& samples, const MachineLimits& l) {
+    double worst = 0.0;
+    for (const AxisState& s : samples)
+        for (int a = 0; a < l.axes; ++a) {
+            worst = std::max(worst, std::abs(s.velocity[a]) / l.axis[a].max_velocity);
+            worst = std::max(worst, std::abs(s.acceleration[a]) / l.axis[a].max_acceleration);
+            worst = std::max(worst, std::abs(s.jerk[a]) / l.axis[a].max_jerk);
+        }
+    return worst;
+}
+
+}  // namespace
+
+TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst_difference_jerk = 0.0, worst_difference_acceleration = 0.0;
+    for (int k = 0; k < 300; ++k) {
+        PlannerParameters p;
+        p.period = 0.001;
+        // Limits and filters drawn independently: often the filters are too short for the limits.
+        p.limits = limits(100 + 300 * unit(rng), 500 + 9500 * unit(rng), 1e4 + 4e5 * unit(rng));
+        p.filters = test::chain_of({0.01 + 0.1 * unit(rng), 0.005 + 0.04 * unit(rng)});
+        if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
+        std::vector<Block> blocks;
+        AxisVector at = AxisVector::Zero();
+        const int n = 2 + static_cast<int>(rng() % 8);
+        for (int i = 0; i < n; ++i) {
+            const AxisVector d = xyz(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized();
+            at += d * (0.2 + 40 * unit(rng) * unit(rng));
+            blocks.push_back(line_to(at, 20 + 380 * unit(rng), 0.001 + unit(rng), i + 1));
+        }
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+        std::vector<AxisVector> points{AxisVector::Zero()};
+        for (const Block& b : blocks) points.push_back(b.target);
+        const Measured m = measure(t.samples, points, p.period);
+        SCOPED_TRACE("program " + std::to_string(k));
+        ASSERT_LE(worst_ratio(t.samples, p.limits), 1.0 + 1e-6);  // what the planner guarantees
+        for (int a = 0; a < 3; ++a) {  // finite differences of the positions, as a drive sees them
+            ASSERT_LE(m.max_velocity[a], p.limits.axis[a].max_velocity * (1 + 1e-6));
+            // Known gap (issue 4 open): an acceleration peak or a jerk piece shorter than a period
+            // lies between samples, so the differences can exceed the limit; bound what is seen.
+            ASSERT_LE(m.max_acceleration[a], p.limits.axis[a].max_acceleration * 1.01);
+            worst_difference_acceleration =
+                std::max(worst_difference_acceleration, m.max_acceleration[a] / p.limits.axis[a].max_acceleration);
+            worst_difference_jerk = std::max(worst_difference_jerk, m.max_jerk[a] / p.limits.axis[a].max_jerk);
+            ASSERT_LE(m.max_jerk[a], p.limits.axis[a].max_jerk * 2.0);
+        }
+        ASSERT_EQ(m.end_position, blocks.back().target);
+    }
+    std::printf("finite differences of positions / limit, largest: acceleration %.5f, jerk %.4f\n",
+                worst_difference_acceleration, worst_difference_jerk);
+}
+
+TEST(AxisLimits, ReversalWithFullOverlapWouldDoubleTheAccelerationAndIsHeldToTheLimit) {
+    PlannerParameters p;
+    p.filters = test::chain_of({0.06, 0.02});
+    p.limits = limits(300, 5000, 5e5);  // T1 = v / a: one block alone reaches a = F / T1 = 5000 at 300 mm/s
+    const std::vector<Block> blocks{line_to(xyz(40, 0), 300, 5.0, 1), line_to(xyz(0, 0), 300, 5.0, 2)};
+    const Trajectory limited = plan_trajectory(p, AxisVector::Zero(), blocks);
+    p.limits = MachineLimits{};
+    const Trajectory free = plan_trajectory(p, AxisVector::Zero(), blocks);
+    double a_free = 0, a_limited = 0;
+    for (const AxisState& s : free.samples) a_free = std::max(a_free, std::abs(s.acceleration[0]));
+    for (const AxisState& s : limited.samples) a_limited = std::max(a_limited, std::abs(s.acceleration[0]));
+    EXPECT_GT(a_free, 7000.0);           // the overlapped reversal adds the two blocks' accelerations
+    EXPECT_LE(a_limited, 5000.0 * (1 + 1e-9));
+    EXPECT_GT(a_limited, 4900.0);        // and the limit is used, not wasted
+}
+
+TEST(DensePaths, ChordedCircleKeepsTheFeedAndTheTolerance) {
+    // R 20 mm in 0.2 mm chords (628 blocks, 125 in one 0.11 s window at 50 mm/s). The filters'
+    // radial shrink F^2 (T1^2 + T2^2) / (24 R) = 0.032 mm is within the 0.05 mm tolerance.
+    PlannerParameters p;
+    p.filters = test::chain_of({0.06, 0.05});
+    p.tolerance_meaning = ToleranceMeaning::contour;
+    const double R = 20.0, feed = 50.0, tolerance = 0.05;
+    const int n = static_cast<int>(std::ceil(2 * std::numbers::pi * R / 0.2));
+    std::vector<Block> blocks;
+    for (int i = 1; i <= n; ++i) {
+        const double phi = 2 * std::numbers::pi * i / n;
+        blocks.push_back(line_to(xyz(R * std::sin(phi), R - R * std::cos(phi)), feed, tolerance, i));
+    }
+    const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    for (const Block& b : blocks) points.push_back(b.target);
+    const Measured m = measure(t.samples, points, p.period);
+    EXPECT_LE(m.max_contour_error, tolerance);
+    // Average speed between the first and the last quarter of the circle. The causal planner
+    // keeps a stop at the end of what it has received within tolerance, which on a curve costs
+    // feed: 73 % today; the 90 % of issue 4 needs a look-ahead (open).
+    const std::size_t a = t.samples.size() / 4, b = 3 * t.samples.size() / 4;
+    double travelled = 0;
+    for (std::size_t i = a; i < b; ++i) travelled += (t.samples[i + 1].position - t.samples[i].position).norm();
+    const double average = travelled / (t.samples[b].time - t.samples[a].time);
+    std::printf("chorded circle: average %.1f mm/s of %.0f programmed\n", average, feed);
+    EXPECT_GT(average, 0.7 * feed) << "average " << average << " mm/s";
+    EXPECT_EQ(m.end_position, blocks.back().target);
+}
+
+TEST(DensePaths, ZigZagFinishingPassHoldsEveryCorner) {
+    PlannerParameters p;
+    p.filters = test::chain_of({0.05, 0.02});
+    std::vector<Block> blocks;
+    const double tolerance = 0.01;
+    for (int i = 1; i <= 400; ++i) blocks.push_back(line_to(xyz(0.25 * i, (i % 2) * 0.4), 100.0, tolerance, i));
+    const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    for (const Block& b : blocks) points.push_back(b.target);
+    const Measured m = measure(t.samples, points, p.period);
+    ASSERT_EQ(m.corner_errors.size(), blocks.size() - 1);
+    for (std::size_t c = 0; c < m.corner_errors.size(); ++c) ASSERT_LE(m.corner_errors[c], tolerance) << "corner " << c;
+    EXPECT_EQ(m.end_position, blocks.back().target);
+}
