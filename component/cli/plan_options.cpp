@@ -27,7 +27,7 @@ po::options_description machine_flags() {
         ("ini", po::value<std::string>()->value_name("FILE"),
          "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]MAX_LINEAR_VELOCITY, "
          "[AXIS_<L>]MAX_VELOCITY/MAX_ACCELERATION/MAX_JERK, [FIRTP]STAGES T1..T4 MODES TOLERANCE "
-         "TOLERANCE_MEANING. Without it: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3, 1 ms period, "
+         "TOLERANCE_MEANING ARC_CHORD_TOLERANCE. Without it: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3, 1 ms period, "
          "T1 = 60 ms, T2 = 50 ms, 0.05 mm tolerance")
         ("t1", po::value<double>()->value_name("S"), "first FIR stage time T1 in seconds (overrides the machine)")
         ("t2", po::value<double>()->value_name("S"), "second FIR stage time T2 in seconds (T2 <= T1)")
@@ -145,9 +145,10 @@ PlanOptions parse_plan_options(std::span<const std::string> args) {
 std::string plan_help() {
     std::ostringstream text;
     text << "Usage: firtp plan PROGRAM.ngc [options]\n\n"
-            "Plans a G-code program (G0/G1, G61/G61.1 exact stop, G64 P tolerance) with FIR-filter corner\n"
-            "smoothing, samples it every servo period, measures it against the programmed path and prints a\n"
-            "summary. Output files are written only when everything succeeded.\n\n"
+            "Plans a G-code program (G0/G1, G2/G3 arcs in G17/G18/G19, X Y Z A B C U V W, G61/G61.1 exact\n"
+            "stop, G64 P tolerance) with FIR-filter corner smoothing, samples it every servo period, measures\n"
+            "it against the programmed path and prints a summary. Output files are written only when\n"
+            "everything succeeded.\n\n"
          << flag_descriptions()
          << "\nExit status: 0 success, 1 bad program/INI/output/gnuplot, 2 bad command line.\n"
             "\nExample:\n  firtp plan examples/diamond.ngc --t1 0.148 --t2 0.089 --csv out.csv --json out.json"
