@@ -23,6 +23,19 @@ void normalise(std::int64_t& tick, double& offset, double period) {
     if (offset < 0.0) offset = 0.0;
 }
 
+constexpr double min_feed_fraction = 0.02;  // lower feeds are tried only when this one fails too
+
+// The highest feed (a fraction of `feed`, bisected in `steps`) that `ok` accepts; below
+// min_feed_fraction only by quarters, down to 0.1 %.
+template <class Feasible>
+double highest_feasible_feed(Feasible&& ok, double feed, int steps) {
+    if (ok(feed)) return feed;
+    double lo = min_feed_fraction, hi = 1.0;
+    while (lo > 1e-3 && !ok(feed * lo)) hi = lo, lo *= 0.25;
+    for (int i = 0; i < steps; ++i) (ok(feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+    return feed * lo;
+}
+
 // Seconds from (tick_a, offset_a) to (tick_b, offset_b).
 double seconds_between(std::int64_t tick_a, double offset_a, std::int64_t tick_b, double offset_b, double period) {
     return static_cast<double>(tick_b - tick_a) * period + (offset_b - offset_a);
@@ -86,10 +99,7 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
             for (int i = 0; i < 8; ++i) (exact(0.5 * (lo + hi), choice.feed) ? lo : hi) = 0.5 * (lo + hi);
             return Choice{lo, choice.feed};
         }
-        double f_lo = min_feed_fraction, f_hi = 1.0;
-        while (f_lo > 1e-3 && !exact(0.0, choice.feed * f_lo)) f_hi = f_lo, f_lo *= 0.25;  // never the unchecked feed
-        for (int i = 0; i < 10; ++i) (exact(0.0, choice.feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
-        return Choice{0.0, choice.feed * f_lo};
+        return Choice{0.0, highest_feasible_feed([&](double f) { return exact(0.0, f); }, choice.feed, 10)};
     };
     constexpr double shallow = 0.5;  // rad (about 30 degrees)
     constexpr int steps = 14;
@@ -98,11 +108,8 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
     // smaller. Full overlap is worth a try only where it does not rule it out.
     const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, tk_high);
     if ((estimate >= tk_high || beta < shallow) && ok(tk_high, feed)) return confirmed({tk_high, feed});
-    if (beta < shallow && ok(tk_high, feed * min_feed_fraction)) {
-        double lo = min_feed_fraction, hi = 1.0;
-        for (int i = 0; i < steps; ++i) (ok(tk_high, feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
-        return confirmed({tk_high, feed * lo});
-    }
+    if (beta < shallow && ok(tk_high, feed * min_feed_fraction))
+        return confirmed({tk_high, highest_feasible_feed([&](double f) { return ok(tk_high, f); }, feed, steps)});
     // Bracket below the estimate, then bisect.
     double lo = 0.0, hi = tk_high;
     if (estimate > 0.0) {
@@ -114,28 +121,17 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
         return confirmed({lo, feed});
     }
     // Even a stop breaks a limit: the block itself is too fast for the filters (short T).
-    double f_lo = min_feed_fraction, f_hi = 1.0;
-    while (f_lo > 1e-3 && !ok(0.0, feed * f_lo)) f_hi = f_lo, f_lo *= 0.25;
-    for (int i = 0; i < steps; ++i) (ok(0.0, feed * 0.5 * (f_lo + f_hi)) ? f_lo : f_hi) = 0.5 * (f_lo + f_hi);
-    return confirmed({0.0, feed * f_lo});
+    return confirmed({0.0, highest_feasible_feed([&](double f) { return ok(0.0, f); }, feed, steps)});
 }
 
 double Planner::feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const {
     const Start s = schedule(0.0, now);
-    return lowest_needed_feed([&](double f) { return window_.feasible({delta, length / f, s.tick, s.offset}); }, feed);
+    return highest_feasible_feed([&](double f) { return window_.feasible({delta, length / f, s.tick, s.offset}); },
+                                 feed, 14);
 }
 
 double Planner::feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const {
-    return lowest_needed_feed([&](double f) { return window_.feasible({delta, length / f, now, 0.0}); }, feed);
-}
-
-template <class Feasible>
-double Planner::lowest_needed_feed(Feasible&& ok, double feed) const {
-    if (ok(feed)) return feed;
-    double lo = min_feed_fraction, hi = 1.0;
-    while (lo > 1e-3 && !ok(feed * lo)) hi = lo, lo *= 0.25;
-    for (int i = 0; i < 14; ++i) (ok(feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
-    return feed * lo;
+    return highest_feasible_feed([&](double f) { return window_.feasible({delta, length / f, now, 0.0}); }, feed, 14);
 }
 
 Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner, bool* has_corner) {

@@ -76,7 +76,6 @@ private:
         double tk;
         double feed;
     };
-    static constexpr double min_feed_fraction = 0.02;  // the window search lowers feed no further
 
     Start schedule(double tk, std::int64_t now) const;
     double latest_overlap(std::int64_t now) const;
@@ -84,9 +83,6 @@ private:
                          std::int64_t now) const;
     double feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const;
     double feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const;
-    // The highest feed (a fraction of `feed`, down to 0.1 %) that `ok` accepts.
-    template <class Feasible>
-    double lowest_needed_feed(Feasible&& ok, double feed) const;
 
     PlannerParameters parameters_;
     const FirChain* chain_;
