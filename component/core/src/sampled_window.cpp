@@ -10,11 +10,21 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-double chord_distance(const AxisVector& point, const AxisVector& a, const AxisVector& b) {
-    const AxisVector ab = b - a;
-    const double len2 = ab.squaredNorm();
-    const double u = len2 > 0.0 ? std::clamp((point - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    return (point - a - u * ab).norm();
+// Distance from a point to the segment a-b over the first n axes (the machine's).
+double chord_distance(const AxisVector& point, const AxisVector& a, const AxisVector& b, int n) {
+    double len2 = 0.0, along = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double ab = b[i] - a[i];
+        len2 += ab * ab;
+        along += (point[i] - a[i]) * ab;
+    }
+    const double u = len2 > 0.0 ? std::clamp(along / len2, 0.0, 1.0) : 0.0;
+    double d2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double d = point[i] - a[i] - u * (b[i] - a[i]);
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
 }
 
 std::int64_t ceil_tick(std::int64_t tick, double offset) { return tick + (offset > 0.0 ? 1 : 0); }
@@ -29,6 +39,7 @@ struct Ranges {
 
 SampledWindow::SampledWindow(const FirChain& chain, const PlannerParameters& parameters, std::size_t max_corners)
     : chain_(&chain), period_(parameters.period), meaning_(parameters.tolerance_meaning), limits_(parameters.limits),
+      axes_(std::clamp(parameters.limits.axes, 1, max_axes)),
       window_ticks_(static_cast<std::int64_t>(std::ceil(chain.delay() / parameters.period)) + 2),
       tail_(static_cast<std::size_t>(window_ticks_) + 1), prefix_(tail_.size() + 1),
       corners_(std::max<std::size_t>(max_corners, 4)) {
@@ -46,6 +57,8 @@ void SampledWindow::reset(const AxisVector& position, std::int64_t tick) {
     for (Sample& s : tail_) s = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
     finalized_tick_ = tick;
     have_last_finalized_ = false;
+    for (AxisVector& h : finalized_history_) h = position;  // it has been resting there
+    finalized_known_ = 3;
     corner_head_ = 0;
     corner_count_ = 1;
     cursor_ = 0;
@@ -105,13 +118,29 @@ double SampledWindow::path_distance(const AxisVector& p, std::size_t cursor, con
         const Corner& c = corner(i);
         // The last junction's segment is the candidate's, not yet committed.
         const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
-        best = std::min(best, chord_distance(p, c.point, end));
+        best = std::min(best, chord_distance(p, c.point, end, axes_));
     }
     return best;
 }
 
+bool SampledWindow::differences_within_limits(const Sweep& w, const AxisVector& p) const {
+    constexpr double slack = 1.0 + 1e-9;
+    const double T = period_;
+    for (int a = 0; a < limits_.axes; ++a) {
+        const AxisLimits& l = limits_.axis[a];
+        const double p0 = p[a], p1 = w.history[0][a], p2 = w.history[1][a], p3 = w.history[2][a];
+        if (w.known >= 1 && l.max_velocity > 0.0 && std::abs(p0 - p1) > l.max_velocity * T * slack) return false;
+        if (w.known >= 2 && l.max_acceleration > 0.0 && std::abs(p0 - 2 * p1 + p2) > l.max_acceleration * T * T * slack)
+            return false;
+        if (w.known >= 3 && l.max_jerk > 0.0 && std::abs(p0 - 3 * p1 + 3 * p2 - p3) > l.max_jerk * T * T * T * slack)
+            return false;
+    }
+    return true;
+}
+
 SampledWindow::Sweep SampledWindow::start_sweep() const {
-    Sweep w{cursor_, {infinity, infinity, infinity}, last_finalized_, have_last_finalized_};
+    Sweep w{cursor_, {infinity, infinity, infinity}, last_finalized_, have_last_finalized_,
+            {finalized_history_[0], finalized_history_[1], finalized_history_[2]}, finalized_known_};
     for (std::size_t j = 0; j < 3; ++j)
         if (cursor_ + j < corner_count_) w.closest[j] = corner(cursor_ + j).best;
     return w;
@@ -120,7 +149,7 @@ SampledWindow::Sweep SampledWindow::start_sweep() const {
 bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta) {
     if (w.chained)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
-            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.previous, p));
+            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.previous, p, axes_));
     if (keep)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
     bool ok = true;
@@ -129,7 +158,7 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
     auto segment_distance = [&](std::size_t i) {
         const Corner& c = corner(i);
         const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
-        return chord_distance(p, c.point, end);
+        return chord_distance(p, c.point, end, axes_);
     };
     while (w.cursor + 1 < corner_count_ && segment_distance(w.cursor + 1) < segment_distance(w.cursor)) {
         const Corner& passed = corner(w.cursor);
@@ -141,12 +170,17 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
     }
     w.previous = p;
     w.chained = true;
+    w.history[2] = w.history[1];
+    w.history[1] = w.history[0];
+    w.history[0] = p;
+    w.known = std::min(w.known + 1, 3);
     return ok;
 }
 
 bool SampledWindow::check_sample(Sweep& w, const Sample& s, double contour_epsilon,
-                                 const AxisVector& candidate_delta) const {
+                                 const AxisVector& candidate_delta, bool consecutive) const {
     if (check_limits_ && !within_limits(s)) return false;
+    if (check_limits_ && consecutive && !differences_within_limits(w, s.position)) return false;
     if (meaning_ == ToleranceMeaning::contour && std::isfinite(contour_epsilon) &&
         path_distance(s.position, w.cursor, candidate_delta) > contour_epsilon)
         return false;
@@ -171,11 +205,12 @@ bool SampledWindow::feasible(const Candidate& c, int stride) const {
     Sweep w = prefix(static_cast<std::size_t>(skip));
     for (std::int64_t k = r.a0 + skip; k <= r.a1; k = k + stride <= r.a1 || k == r.a1 ? k + stride : r.a1) {
         if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
-        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta)) return false;
+        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
     }
     w.chained = false;  // the middle of a long pulse is skipped
+    w.known = 0;
     for (std::int64_t k = r.b0; k <= r.b1; k = k + stride <= r.b1 || k == r.b1 ? k + stride : r.b1)
-        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta)) return false;
+        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
     // At rest on the last point: what is left must be within tolerance too.
     if (meaning_ == ToleranceMeaning::corner_point)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
@@ -209,6 +244,7 @@ void SampledWindow::commit(const Candidate& c) {
     if (end - start > 2 * window_ticks_) {
         fold(tail_tick_, start + window_ticks_);
         w.chained = false;
+        w.known = 0;
         fold(end - 1, end);
     } else {
         fold(tail_tick_, end);
@@ -216,6 +252,8 @@ void SampledWindow::commit(const Candidate& c) {
     cursor_ = w.cursor;
     last_finalized_ = w.previous;
     have_last_finalized_ = w.chained;
+    for (int i = 0; i < 3; ++i) finalized_history_[i] = w.history[i];
+    finalized_known_ = w.known;
 
     // The new tail, rewritten in place: entry i reads the old entry (end - tail_tick_) + i >= i.
     for (std::size_t i = 0; i < tail_.size(); ++i) {

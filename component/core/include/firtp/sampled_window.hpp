@@ -71,17 +71,21 @@ private:
         double closest[3];
         AxisVector previous;
         bool chained;
+        AxisVector history[3];  // the last three samples, newest first, for finite differences
+        int known;              // how many of them are consecutive samples
     };
 
     const Sample& committed(std::int64_t tick) const;  // output of the committed blocks at a tick
     Sample with(const Candidate& c, std::int64_t tick, const Sample& base) const;
     bool within_limits(const Sample& s) const;
+    bool differences_within_limits(const Sweep& w, const AxisVector& p) const;  // as a drive sees them
     double path_distance(const AxisVector& p, std::size_t cursor, const AxisVector& candidate_delta) const;
     Sweep start_sweep() const;
     // Takes the sample at p; false when a junction the tool passed was not approached within its
     // tolerance. With `keep`, passed junctions keep their closest approach for good.
     bool visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta);
-    bool check_sample(Sweep& w, const Sample& s, double contour_epsilon, const AxisVector& candidate_delta) const;
+    bool check_sample(Sweep& w, const Sample& s, double contour_epsilon, const AxisVector& candidate_delta,
+                      bool consecutive) const;
     void sweep_tail();  // restarts prefix_ from the finalized state
     const Sweep& prefix(std::size_t i) const;  // extends prefix_ to entry i
     void finalize_until(std::int64_t tick);
@@ -93,6 +97,7 @@ private:
     ToleranceMeaning meaning_;
     MachineLimits limits_;
     bool check_limits_ = false;
+    int axes_;                         // geometry over the machine's axes only
     std::int64_t window_ticks_;        // Td / period, rounded up, plus margin
 
     std::vector<Sample> tail_;         // committed output for ticks tail_tick_ .. tail_tick_ + size
@@ -104,6 +109,8 @@ private:
     std::int64_t finalized_tick_ = 0;  // samples before this tick can no longer change
     AxisVector last_finalized_ = AxisVector::Zero();
     bool have_last_finalized_ = false;
+    AxisVector finalized_history_[3] = {AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
+    int finalized_known_ = 0;
 
     std::vector<Corner> corners_;      // ring: junctions that samples can still approach
     std::size_t corner_head_ = 0;
