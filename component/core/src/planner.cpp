@@ -27,11 +27,14 @@ constexpr double min_feed_fraction = 0.02;  // lower feeds are tried only when t
 
 // The highest feed (a fraction of `feed`, bisected in `steps`) that `ok` accepts; below
 // min_feed_fraction only by quarters, down to 0.1 %.
+// A stop at 0.1 % of the feed that still fails cannot be the feed's doing: the corner tracking lost
+// the tool on a path that comes back near itself. Then the block goes at min_feed_fraction.
 template <class Feasible>
 double highest_feasible_feed(Feasible&& ok, double feed, int steps) {
     if (ok(feed)) return feed;
     double lo = min_feed_fraction, hi = 1.0;
     while (lo > 1e-3 && !ok(feed * lo)) hi = lo, lo *= 0.25;
+    if (lo <= 1e-3 && !ok(feed * lo)) return feed * min_feed_fraction;
     for (int i = 0; i < steps; ++i) (ok(feed * 0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
     return feed * lo;
 }

@@ -153,14 +153,15 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
     if (keep)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
     bool ok = true;
-    // The tool has passed a junction once the segment after it is nearer than the one before (the
+    // The tool has passed a junction once the segment after it is as near as the one before (the
     // last junction's segment is the candidate's).
     auto segment_distance = [&](std::size_t i) {
         const Corner& c = corner(i);
         const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
         return chord_distance(p, c.point, end, axes_);
     };
-    while (w.cursor + 1 < corner_count_ && segment_distance(w.cursor + 1) < segment_distance(w.cursor)) {
+    // Ties advance: a retract and its plunge lie on one line, and the cursor must not stay behind.
+    while (w.cursor + 1 < corner_count_ && segment_distance(w.cursor + 1) <= segment_distance(w.cursor)) {
         const Corner& passed = corner(w.cursor);
         if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
         w.closest[0] = w.closest[1];
