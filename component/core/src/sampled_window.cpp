@@ -55,7 +55,6 @@ void SampledWindow::reset(const AxisVector& position, std::int64_t tick) {
     at_rest_ = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
     tail_tick_ = tick;
     for (Sample& s : tail_) s = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
-    finalized_tick_ = tick;
     have_last_finalized_ = false;
     for (AxisVector& h : finalized_history_) h = position;  // it has been resting there
     finalized_known_ = 3;
@@ -219,14 +218,13 @@ bool SampledWindow::feasible(const Candidate& c, int stride) const {
     return true;
 }
 
-void SampledWindow::finalize_until(std::int64_t tick) {
+void SampledWindow::release_passed_corners(std::int64_t tick) {
     // Release junctions the tool has passed and no later sample can approach.
     while (corner_count_ > 1 && cursor_ > 0 && corner(0).release_tick < tick) {
         corner_head_ = (corner_head_ + 1) % corners_.size();
         --corner_count_;
         --cursor_;
     }
-    finalized_tick_ = tick;
 }
 
 void SampledWindow::commit(const Candidate& c) {
@@ -277,7 +275,7 @@ void SampledWindow::commit(const Candidate& c) {
     }
     ++corner_count_;
     corner(corner_count_ - 1) = {rest_, infinity, infinity, false, std::numeric_limits<std::int64_t>::max(), rest_};
-    finalize_until(end);
+    release_passed_corners(end);
     sweep_tail();
 }
 

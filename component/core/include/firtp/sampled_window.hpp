@@ -48,7 +48,6 @@ public:
     // Commits a candidate that was feasible (or a stop): its samples become the committed output.
     void commit(const Candidate& c);
 
-    bool full() const { return corner_count_ + 1 >= corners_.size(); }
     bool checks_limits() const { return check_limits_; }
 
 private:
@@ -88,7 +87,7 @@ private:
                       bool consecutive) const;
     void sweep_tail();  // restarts prefix_ from the finalized state
     const Sweep& prefix(std::size_t i) const;  // extends prefix_ to entry i
-    void finalize_until(std::int64_t tick);
+    void release_passed_corners(std::int64_t tick);  // junctions no sample from tick on can approach
     Corner& corner(std::size_t i) { return corners_[(corner_head_ + i) % corners_.size()]; }
     const Corner& corner(std::size_t i) const { return corners_[(corner_head_ + i) % corners_.size()]; }
 
@@ -106,7 +105,6 @@ private:
     std::int64_t tail_tick_ = 0;
     AxisVector rest_ = AxisVector::Zero();  // where the committed blocks end
     Sample at_rest_;                   // the committed output after the tail
-    std::int64_t finalized_tick_ = 0;  // samples before this tick can no longer change
     AxisVector last_finalized_ = AxisVector::Zero();
     bool have_last_finalized_ = false;
     AxisVector finalized_history_[3] = {AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
