@@ -61,7 +61,7 @@ void Planner::reset(const AxisVector& position, std::int64_t tick) {
 Planner::Start Planner::schedule(double tk, std::int64_t now) const {
     // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
     const double period = parameters_.period;
-    Start s{last_.end_tick, last_.end_offset + (chain_->delay() - tk), tk, false};
+    Start s{last_.end_tick, last_.end_offset + (chain_->delay() - tk), tk};
     normalise(s.tick, s.offset, period);
     if (tk == 0.0 && s.offset > 0.0) {
         // A stop: rest until the next servo sample so that one sample lands exactly on the
@@ -69,9 +69,7 @@ Planner::Start Planner::schedule(double tk, std::int64_t now) const {
         ++s.tick;
         s.offset = 0.0;
     }
-    if (s.tick < now) {
-        s = {now, 0.0, std::max(0.0, chain_->delay() - seconds_between(last_.end_tick, last_.end_offset, now, 0.0, period)), true};
-    }
+    if (s.tick < now) s = {now, 0.0, latest_overlap(now)};  // too late for the overlap asked for
     return s;
 }
 
@@ -127,14 +125,9 @@ Planner::Choice Planner::search_window(const AxisVector& delta, double length, d
     return confirmed({0.0, highest_feasible_feed([&](double f) { return ok(0.0, f); }, feed, steps)});
 }
 
-double Planner::feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const {
-    const Start s = schedule(0.0, now);
-    return highest_feasible_feed([&](double f) { return window_.feasible({delta, length / f, s.tick, s.offset}); },
-                                 feed, 14);
-}
-
-double Planner::feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const {
-    return highest_feasible_feed([&](double f) { return window_.feasible({delta, length / f, now, 0.0}); }, feed, 14);
+double Planner::feed_for_start(const AxisVector& delta, double length, double feed, const Start& start) const {
+    return highest_feasible_feed(
+        [&](double f) { return window_.feasible({delta, length / f, start.tick, start.offset}); }, feed, 14);
 }
 
 Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner, bool* has_corner) {
@@ -157,10 +150,10 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
 
     CornerReport report;
     bool joined = false;
-    Start start{now, 0.0, 0.0, false};  // from rest: at once
+    Start start{now, 0.0, 0.0};  // from rest: at once
     if (!last_.moving && window_.checks_limits()) {
         // Even alone a pulse can break a limit: shorter than T1 - T2, it doubles the jerk F / (T1 T2).
-        feed = feed_from_rest(delta, length, feed, now);
+        feed = feed_for_start(delta, length, feed, start);
         tv = length / feed;
     }
     if (last_.moving) {
@@ -177,7 +170,7 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
         if (report.exact_stop) {
             tk = 0.0;
             if (window_.checks_limits()) {  // after a stop only the feed can keep the limits
-                feed = feed_after_stop(delta, length, feed, now);
+                feed = feed_for_start(delta, length, feed, schedule(0.0, now));
                 tv = length / feed;
             }
         } else if (in_window) {

@@ -69,8 +69,7 @@ private:
     struct Start {
         std::int64_t tick;
         double offset;
-        double tk;   // the overlap this start gives
-        bool late;   // moved to now: the block came too late for the overlap asked for
+        double tk;   // the overlap this start gives (less than asked when the block came late)
     };
     struct Choice {
         double tk;
@@ -81,8 +80,9 @@ private:
     double latest_overlap(std::int64_t now) const;
     Choice search_window(const AxisVector& delta, double length, double feed, double beta, double epsilon,
                          std::int64_t now) const;
-    double feed_from_rest(const AxisVector& delta, double length, double feed, std::int64_t now) const;
-    double feed_after_stop(const AxisVector& delta, double length, double feed, std::int64_t now) const;
+    // The highest feed, up to `feed`, at which the block starting at `start` passes the window
+    // check (from rest or after a stop, where only the feed can keep the limits).
+    double feed_for_start(const AxisVector& delta, double length, double feed, const Start& start) const;
 
     PlannerParameters parameters_;
     const FirChain* chain_;
