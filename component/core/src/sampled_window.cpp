@@ -29,6 +29,15 @@ double chord_distance(const AxisVector& point, const AxisVector& a, const AxisVe
 
 std::int64_t ceil_tick(std::int64_t tick, double offset) { return tick + (offset > 0.0 ? 1 : 0); }
 
+// |v|, |a|, |j| of one axis against its limits (0 = none); only the first `known` are checked.
+bool axis_within(const AxisLimits& l, double v, double a, double j, int known = 3) {
+    constexpr double slack = 1.0 + 1e-9;
+    if (known >= 1 && l.max_velocity > 0.0 && std::abs(v) > l.max_velocity * slack) return false;
+    if (known >= 2 && l.max_acceleration > 0.0 && std::abs(a) > l.max_acceleration * slack) return false;
+    if (known >= 3 && l.max_jerk > 0.0 && std::abs(j) > l.max_jerk * slack) return false;
+    return true;
+}
+
 // Ticks a candidate must be checked at: its start to one window after its end, without the
 // middle of a long pulse where it moves alone along its own line.
 struct Ranges {
@@ -55,7 +64,6 @@ void SampledWindow::reset(const AxisVector& position, std::int64_t tick) {
     at_rest_ = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
     tail_tick_ = tick;
     for (Sample& s : tail_) s = {position, AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
-    have_last_finalized_ = false;
     for (AxisVector& h : finalized_history_) h = position;  // it has been resting there
     finalized_known_ = 3;
     corner_head_ = 0;
@@ -100,45 +108,38 @@ SampledWindow::Sample SampledWindow::with(const Candidate& c, std::int64_t tick,
 }
 
 bool SampledWindow::within_limits(const Sample& s) const {
-    constexpr double slack = 1.0 + 1e-9;
-    for (int a = 0; a < limits_.axes; ++a) {
-        const AxisLimits& l = limits_.axis[a];
-        if (l.max_velocity > 0.0 && std::abs(s.velocity[a]) > l.max_velocity * slack) return false;
-        if (l.max_acceleration > 0.0 && std::abs(s.acceleration[a]) > l.max_acceleration * slack) return false;
-        if (l.max_jerk > 0.0 && std::abs(s.jerk[a]) > l.max_jerk * slack) return false;
-    }
+    for (int a = 0; a < limits_.axes; ++a)
+        if (!axis_within(limits_.axis[a], s.velocity[a], s.acceleration[a], s.jerk[a])) return false;
     return true;
+}
+
+double SampledWindow::segment_distance(const AxisVector& p, std::size_t i, const AxisVector& candidate_delta) const {
+    const Corner& c = corner(i);
+    // The last junction's segment is the candidate's, not yet committed.
+    const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
+    return chord_distance(p, c.point, end, axes_);
 }
 
 double SampledWindow::path_distance(const AxisVector& p, std::size_t cursor, const AxisVector& candidate_delta) const {
     double best = infinity;
     const std::size_t from = cursor > 0 ? cursor - 1 : 0, to = std::min(corner_count_, cursor + 3);
-    for (std::size_t i = from; i < to; ++i) {
-        const Corner& c = corner(i);
-        // The last junction's segment is the candidate's, not yet committed.
-        const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
-        best = std::min(best, chord_distance(p, c.point, end, axes_));
-    }
+    for (std::size_t i = from; i < to; ++i) best = std::min(best, segment_distance(p, i, candidate_delta));
     return best;
 }
 
 bool SampledWindow::differences_within_limits(const Sweep& w, const AxisVector& p) const {
-    constexpr double slack = 1.0 + 1e-9;
     const double T = period_;
     for (int a = 0; a < limits_.axes; ++a) {
-        const AxisLimits& l = limits_.axis[a];
         const double p0 = p[a], p1 = w.history[0][a], p2 = w.history[1][a], p3 = w.history[2][a];
-        if (w.known >= 1 && l.max_velocity > 0.0 && std::abs(p0 - p1) > l.max_velocity * T * slack) return false;
-        if (w.known >= 2 && l.max_acceleration > 0.0 && std::abs(p0 - 2 * p1 + p2) > l.max_acceleration * T * T * slack)
-            return false;
-        if (w.known >= 3 && l.max_jerk > 0.0 && std::abs(p0 - 3 * p1 + 3 * p2 - p3) > l.max_jerk * T * T * T * slack)
+        if (!axis_within(limits_.axis[a], (p0 - p1) / T, (p0 - 2 * p1 + p2) / (T * T),
+                         (p0 - 3 * p1 + 3 * p2 - p3) / (T * T * T), w.known))
             return false;
     }
     return true;
 }
 
 SampledWindow::Sweep SampledWindow::start_sweep() const {
-    Sweep w{cursor_, {infinity, infinity, infinity}, last_finalized_, have_last_finalized_,
+    Sweep w{cursor_, {infinity, infinity, infinity},
             {finalized_history_[0], finalized_history_[1], finalized_history_[2]}, finalized_known_};
     for (std::size_t j = 0; j < 3; ++j)
         if (cursor_ + j < corner_count_) w.closest[j] = corner(cursor_ + j).best;
@@ -146,21 +147,16 @@ SampledWindow::Sweep SampledWindow::start_sweep() const {
 }
 
 bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta) {
-    if (w.chained)
+    if (w.known > 0)  // the chord from the previous sample
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
-            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.previous, p, axes_));
+            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.history[0], p, axes_));
     if (keep)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
     bool ok = true;
-    // The tool has passed a junction once the segment after it is as near as the one before (the
-    // last junction's segment is the candidate's).
-    auto segment_distance = [&](std::size_t i) {
-        const Corner& c = corner(i);
-        const AxisVector end = i + 1 == corner_count_ ? AxisVector(c.point + candidate_delta) : c.segment_end;
-        return chord_distance(p, c.point, end, axes_);
-    };
-    // Ties advance: a retract and its plunge lie on one line, and the cursor must not stay behind.
-    while (w.cursor + 1 < corner_count_ && segment_distance(w.cursor + 1) <= segment_distance(w.cursor)) {
+    // The tool has passed a junction once the segment after it is as near as the one before. Ties
+    // advance: a retract and its plunge lie on one line, and the cursor must not stay behind.
+    while (w.cursor + 1 < corner_count_ &&
+           segment_distance(p, w.cursor + 1, candidate_delta) <= segment_distance(p, w.cursor, candidate_delta)) {
         const Corner& passed = corner(w.cursor);
         if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
         w.closest[0] = w.closest[1];
@@ -168,8 +164,6 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
         w.closest[2] = w.cursor + 3 < corner_count_ ? corner(w.cursor + 3).best : infinity;
         ++w.cursor;
     }
-    w.previous = p;
-    w.chained = true;
     w.history[2] = w.history[1];
     w.history[1] = w.history[0];
     w.history[0] = p;
@@ -207,8 +201,7 @@ bool SampledWindow::feasible(const Candidate& c, int stride) const {
         if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
         if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
     }
-    w.chained = false;  // the middle of a long pulse is skipped
-    w.known = 0;
+    w.known = 0;  // the middle of a long pulse is skipped
     for (std::int64_t k = r.b0; k <= r.b1; k = k + stride <= r.b1 || k == r.b1 ? k + stride : r.b1)
         if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
     // At rest on the last point: what is left must be within tolerance too.
@@ -242,15 +235,12 @@ void SampledWindow::commit(const Candidate& c) {
     };
     if (end - start > 2 * window_ticks_) {
         fold(tail_tick_, start + window_ticks_);
-        w.chained = false;
         w.known = 0;
         fold(end - 1, end);
     } else {
         fold(tail_tick_, end);
     }
     cursor_ = w.cursor;
-    last_finalized_ = w.previous;
-    have_last_finalized_ = w.chained;
     for (int i = 0; i < 3; ++i) finalized_history_[i] = w.history[i];
     finalized_known_ = w.known;
 

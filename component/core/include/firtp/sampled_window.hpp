@@ -68,9 +68,7 @@ private:
     struct Sweep {
         std::size_t cursor;
         double closest[3];
-        AxisVector previous;
-        bool chained;
-        AxisVector history[3];  // the last three samples, newest first, for finite differences
+        AxisVector history[3];  // the last three samples, newest first (chords, finite differences)
         int known;              // how many of them are consecutive samples
     };
 
@@ -78,6 +76,7 @@ private:
     Sample with(const Candidate& c, std::int64_t tick, const Sample& base) const;
     bool within_limits(const Sample& s) const;
     bool differences_within_limits(const Sweep& w, const AxisVector& p) const;  // as a drive sees them
+    double segment_distance(const AxisVector& p, std::size_t i, const AxisVector& candidate_delta) const;
     double path_distance(const AxisVector& p, std::size_t cursor, const AxisVector& candidate_delta) const;
     Sweep start_sweep() const;
     // Takes the sample at p; false when a junction the tool passed was not approached within its
@@ -105,8 +104,6 @@ private:
     std::int64_t tail_tick_ = 0;
     AxisVector rest_ = AxisVector::Zero();  // where the committed blocks end
     Sample at_rest_;                   // the committed output after the tail
-    AxisVector last_finalized_ = AxisVector::Zero();
-    bool have_last_finalized_ = false;
     AxisVector finalized_history_[3] = {AxisVector::Zero(), AxisVector::Zero(), AxisVector::Zero()};
     int finalized_known_ = 0;
 
