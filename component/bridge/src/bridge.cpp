@@ -5,22 +5,12 @@
 #include "stream_records.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace firtp {
 
 namespace {
-
-std::int64_t now_us() {
-    return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
-std::string describe_block(const firtp_lcm::block_t& m) {
-    return "block seq " + std::to_string(m.seq) + " (line " + std::to_string(m.line) + ")";
-}
 
 const char* describe_component_error(std::int32_t code) {
     switch (code) {
@@ -133,7 +123,7 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
         const std::int32_t code = verdict == Verdict::repeated
                                       ? std::int32_t{firtp_lcm::status_t::ERROR_REPEATED}
                                       : std::int32_t{firtp_lcm::status_t::ERROR_SEQUENCE_GAP};
-        report(code, describe_block(*m) + ": " + messages::SequenceChecker::describe(verdict) + ", expected seq " +
+        report(code, messages::describe(*m) + ": " + messages::SequenceChecker::describe(verdict) + ", expected seq " +
                          std::to_string(sequence_.next_seq()));
         return;
     }
@@ -146,12 +136,12 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
     if (fault_ || abort_) {
         ++rejected_;
         report(firtp_lcm::status_t::ERROR_SEQUENCE_GAP,
-               describe_block(*m) + ": refused, the program was " + (abort_ ? "aborted" : "stopped by an error"));
+               messages::describe(*m) + ": refused, the program was " + (abort_ ? "aborted" : "stopped by an error"));
         return;
     }
     if (!hal_stream_writable(&streams_->blocks)) {
         ++rejected_;
-        report(firtp_lcm::status_t::ERROR_QUEUE_FULL, describe_block(*m) + ": the block stream is full, resend");
+        report(firtp_lcm::status_t::ERROR_QUEUE_FULL, messages::describe(*m) + ": the block stream is full, resend");
         return;
     }
     stream::BlockRecord record;
@@ -209,7 +199,7 @@ void Bridge::forward_states() {
                        " (the bridge fell behind the servo thread)");
         last_tick_ = tick;
         firtp_lcm::axis_state_t m;
-        m.utime = now_us();
+        m.utime = messages::now_utime();
         m.tick = tick;
         m.time = static_cast<double>(tick) * options_.period;
         m.line = record[1].s;
@@ -233,7 +223,7 @@ void Bridge::forward_states() {
 
 void Bridge::publish_status() {
     firtp_lcm::status_t s;
-    s.utime = now_us();
+    s.utime = messages::now_utime();
     s.seq = ++status_seq_;
     s.tick = *pins_->tick;
     s.program = sequence_.program();

@@ -15,11 +15,6 @@ namespace {
 
 using firtp_lcm::status_t;
 
-std::int64_t wall_utime() {
-    using namespace std::chrono;
-    return duration_cast<microseconds>(system_clock::now().time_since_epoch()).count();
-}
-
 constexpr int max_messages_per_step = 10000;  // step() never spins forever on a flood
 
 }  // namespace
@@ -52,7 +47,7 @@ struct Host::State {
     State(lcm::LCM& l, const Program& program, HostOptions o)
         : lcm(l),
           options(std::move(o)),
-          program_id(options.program_id != 0 ? options.program_id : wall_utime()),
+          program_id(options.program_id != 0 ? options.program_id : messages::now_utime()),
           stream(program_id, std::ssize(program.blocks),
                  {options.initial_window, options.resend_timeout, options.max_resends}),
           control(program_id, options.feed_scale, options.max_feed_scale, options.control_period),
@@ -96,7 +91,7 @@ struct Host::State {
     }
 
     void publish_control(Clock::time_point t) {
-        if (auto message = control.due(t, wall_utime())) {
+        if (auto message = control.due(t, messages::now_utime())) {
             lcm.publish(messages::control_channel, &*message);
             ++statistics.controls;
         }
@@ -107,7 +102,7 @@ struct Host::State {
             const std::optional<std::int64_t> seq = stream.next();
             if (!seq) return;
             firtp_lcm::block_t& message = blocks[*seq - 1];
-            message.utime = wall_utime();
+            message.utime = messages::now_utime();
             lcm.publish(messages::block_channel, &message);
             stream.sent(*seq, t);
             ++statistics.blocks_published;
@@ -117,8 +112,7 @@ struct Host::State {
     void check_stall() {
         const std::optional<std::int64_t> seq = stream.stalled();
         if (!seq) return;
-        std::string text = "block seq " + std::to_string(*seq) + " (line " +
-                           std::to_string(blocks[*seq - 1].line) + ") not accepted after " +
+        std::string text = messages::describe(blocks[*seq - 1]) + " not accepted after " +
                            std::to_string(options.max_resends) + " resends";
         if (latest && !latest->error_text.empty()) text += "; component: " + latest->error_text;
         finish(Result::failed, text);

@@ -2,6 +2,7 @@
 #include <firtp/messages.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 
 namespace firtp::messages {
@@ -15,6 +16,11 @@ std::int32_t clamp_line(std::int64_t line) {
 }
 
 }  // namespace
+
+std::int64_t now_utime() {
+    using namespace std::chrono;
+    return duration_cast<microseconds>(system_clock::now().time_since_epoch()).count();
+}
 
 firtp_lcm::block_t to_message(const Block& block, std::int64_t program, std::int64_t seq, std::int64_t utime) {
     firtp_lcm::block_t message{};

@@ -49,6 +49,10 @@ void check_kinds(const firtp_lcm::block_t& message, std::vector<std::string>& pr
 
 }  // namespace
 
+std::string describe(const firtp_lcm::block_t& message) {
+    return "block seq " + std::to_string(message.seq) + " (line " + std::to_string(message.line) + ")";
+}
+
 std::optional<std::string> validate(const firtp_lcm::block_t& message) {
     std::vector<std::string> problems;
     if (message.seq < 1) problems.push_back("seq must be >= 1");
@@ -58,7 +62,7 @@ std::optional<std::string> validate(const firtp_lcm::block_t& message) {
     check_kinds(message, problems);
     if (problems.empty()) return std::nullopt;
 
-    std::string out = "block seq " + std::to_string(message.seq) + " (line " + std::to_string(message.line) + "): ";
+    std::string out = describe(message) + ": ";
     for (std::size_t i = 0; i < problems.size(); ++i) out += (i == 0 ? "" : "; ") + problems[i];
     return out;
 }

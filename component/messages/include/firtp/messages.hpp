@@ -40,6 +40,12 @@ firtp_lcm::block_t to_message(const Block& block, std::int64_t program, std::int
 // or +inf, known motion type (1, 2) and termination (0, 1), seq >= 1, |target| <= 1e6.
 std::optional<std::string> validate(const firtp_lcm::block_t& message);
 
+// "block seq N (line L)": how every error about one block message names it.
+std::string describe(const firtp_lcm::block_t& message);
+
+// Wall-clock microseconds since the epoch, LCM's utime convention.
+std::int64_t now_utime();
+
 // Valid message -> block (call validate first).
 Block to_block(const firtp_lcm::block_t& message);
 
