@@ -85,17 +85,21 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     return true;
 }
 
-void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
+int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) {
     stream::BlockRecord record;
+    int refused = 0;
+    while (refused < settings_.max_blocks_per_period && next_record(source, record)) ++refused;
+    if (in.strobe && !ack_) ++refused;  // a new pin block, acknowledged but not run
+    ack_ = in.strobe;
+    rejected_ += refused;
+    return refused;
+}
+
+void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
         if (enabled_) drop_everything(last_.position);  // drives are off: no deceleration, no queue
         enabled_ = false;
-        for (int k = 0; k < settings_.max_blocks_per_period && next_record(source, record); ++k) {
-            error_ = ComponentError::not_enabled;
-            ++rejected_;
-        }
-        if (in.strobe && !ack_) error_ = ComponentError::not_enabled, ++rejected_;
-        ack_ = in.strobe;
+        if (refuse_inputs(in, source) > 0) error_ = ComponentError::not_enabled;
         last_.velocity.setZero();
         last_.acceleration.setZero();
         last_.jerk.setZero();
@@ -109,10 +113,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
         interpolator_.set_rate(stopping ? 0.0 : std::clamp(in.feed_scale, 0.0, settings_.max_feed_scale));
 
         if (in.abort || aborting_) {  // the operator stopped this program: refuse the rest of it
-            for (int k = 0; k < settings_.max_blocks_per_period && next_record(source, record); ++k)
-                ++rejected_;
-            if (in.strobe && !ack_) ++rejected_;
-            ack_ = in.strobe;
+            refuse_inputs(in, source);
             if (in.abort) halted_ = true;
         } else {
             if (!in.strobe) {
@@ -127,6 +128,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             // At least one block a period; more while the planning budget lasts.
             const bool budgeted = settings_.plan_budget_ns > 0 && settings_.clock_ns != nullptr;
             const std::int64_t begin = budgeted ? settings_.clock_ns() : 0;
+            stream::BlockRecord record;
             for (int k = 0; k < settings_.max_blocks_per_period && interpolator_.free() > 0 &&
                             (k == 0 || !budgeted || settings_.clock_ns() - begin < settings_.plan_budget_ns) &&
                             next_record(source, record);

@@ -79,7 +79,8 @@ public:
 
 private:
     // Checks and plans one block; false (and the error latched) when it must not run.
-    bool accept(const stream::BlockRecord& record, bool type_known);
+    bool accept(const stream::BlockRecord& record, bool from_stream);
+    int refuse_inputs(const ComponentInputs& in, BlockSource source);  // counts what it refused
     void fail(ComponentError error);
     void drop_everything(const AxisVector& at);
 
