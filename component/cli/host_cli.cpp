@@ -7,9 +7,7 @@
 
 #include <firtp/host_command.hpp>
 
-#include <fstream>
 #include <iostream>
-#include <stdexcept>
 
 namespace firtp::cli {
 
@@ -30,10 +28,7 @@ int host_command(std::span<const std::string> args) {
         const double period = h.machine.period;
         h.save_axis_states = [csv, period](const std::vector<firtp_lcm::axis_state_t>& states) {
             OutputFiles outputs;
-            std::ofstream out(outputs.create(csv), std::ios::binary);
-            write_csv(out, firtp::samples_from_axis_states(states, period));
-            out.close();
-            if (!out) throw std::runtime_error("cannot write '" + csv.string() + "'");
+            outputs.write(csv, [&](std::ostream& out) { write_csv(out, firtp::samples_from_axis_states(states, period)); });
             outputs.commit();
         };
     }

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <vector>
 
 namespace firtp::cli {
@@ -17,6 +19,16 @@ public:
     // Creates an empty temporary ".NAME.XXXXXX" in the target's directory and returns its path.
     // Throws std::runtime_error naming the target when that fails.
     std::filesystem::path create(const std::filesystem::path& target);
+
+    // create(), then lets `fill` write the temporary as text; throws naming the target unless every
+    // byte reached the file.
+    template <class Fill>
+    void write(const std::filesystem::path& target, Fill&& fill) {
+        std::ofstream out(create(target), std::ios::binary);
+        fill(out);
+        out.close();
+        if (!out) throw std::runtime_error("cannot write '" + target.string() + "'");
+    }
 
     // Renames every temporary onto its target.
     void commit();
