@@ -28,6 +28,20 @@ void quiesce(Thread& t) {
   while (t.cycles.load(std::memory_order_seq_cst) == seen) std::this_thread::yield();
 }
 
+/// The thread named 'name', or nullptr after fail(-EINVAL, "thread 'NAME' not found").
+Thread* existing_thread(const char* name) {
+  Thread* t = name == nullptr ? nullptr : find_thread(name);
+  if (t == nullptr) fail(-EINVAL, "thread '%s' not found", name == nullptr ? "" : name);
+  return t;
+}
+
+/// The function named 'name', or nullptr after fail(-EINVAL, "function 'NAME' not found").
+Funct* existing_funct(const char* name) {
+  Funct* f = name == nullptr ? nullptr : find_funct(name);
+  if (f == nullptr) fail(-EINVAL, "function '%s' not found", name == nullptr ? "" : name);
+  return f;
+}
+
 /// Adds a thread-owned s32 param (owner 0) for thread statistics.
 void thread_param(State& s, const std::string& name, hal_param_dir_t dir, hal_s32_t* data) {
   auto p = std::make_unique<Param>();
@@ -81,8 +95,8 @@ int thread_new(const char* name, unsigned long period, int uses_fp) {
 int thread_delete(const char* name) {
   State& s = state();
   Lock lock(s.mu);
-  Thread* t = name == nullptr ? nullptr : find_thread(name);
-  if (t == nullptr) return fail(-EINVAL, "thread '%s' not found", name == nullptr ? "" : name);
+  Thread* t = existing_thread(name);
+  if (t == nullptr) return -EINVAL;
   if (s.running) return fail(-EBUSY, "thread '%s': stop threads before deleting one", name);
   for (Funct* f : current(*t)) --f->users;
   s.params.erase(t->name + ".time");
@@ -97,10 +111,10 @@ int thread_delete(const char* name) {
 int add_funct(const char* funct, const char* thread, int position) {
   State& s = state();
   Lock lock(s.mu);
-  Funct* f = funct == nullptr ? nullptr : find_funct(funct);
-  if (f == nullptr) return fail(-EINVAL, "function '%s' not found", funct ? funct : "");
-  Thread* t = thread == nullptr ? nullptr : find_thread(thread);
-  if (t == nullptr) return fail(-EINVAL, "thread '%s' not found", thread ? thread : "");
+  Funct* f = existing_funct(funct);
+  if (f == nullptr) return -EINVAL;
+  Thread* t = existing_thread(thread);
+  if (t == nullptr) return -EINVAL;
   if (position == 0) return fail(-EINVAL, "addf %s: position 0 is invalid (1 first, -1 last)", funct);
   if (f->uses_fp && !t->uses_fp)
     return fail(-EINVAL, "function '%s' uses floating point but thread '%s' does not", funct,
@@ -122,10 +136,10 @@ int add_funct(const char* funct, const char* thread, int position) {
 int del_funct(const char* funct, const char* thread) {
   State& s = state();
   Lock lock(s.mu);
-  Funct* f = funct == nullptr ? nullptr : find_funct(funct);
-  if (f == nullptr) return fail(-EINVAL, "function '%s' not found", funct ? funct : "");
-  Thread* t = thread == nullptr ? nullptr : find_thread(thread);
-  if (t == nullptr) return fail(-EINVAL, "thread '%s' not found", thread ? thread : "");
+  Funct* f = existing_funct(funct);
+  if (f == nullptr) return -EINVAL;
+  Thread* t = existing_thread(thread);
+  if (t == nullptr) return -EINVAL;
   std::vector<Funct*> items = current(*t);
   auto it = std::find(items.begin(), items.end(), f);
   if (it == items.end())
