@@ -120,15 +120,14 @@ TEST(DensePaths, ChordedCircleKeepsTheFeedAndTheTolerance) {
     for (const Block& b : blocks) points.push_back(b.target);
     const Measured m = measure(t.samples, points, p.period);
     EXPECT_LE(m.max_contour_error, tolerance);
-    // Average speed between the first and the last quarter of the circle. The causal planner
-    // keeps a stop at the end of what it has received within tolerance, which on a curve costs
-    // feed: 73 % today; the 90 % of issue 4 needs a look-ahead (open).
+    // Average speed between the first and the last quarter of the circle: the steady shrink is
+    // within tolerance, so the feed must stay (issue 4 asks for 90 %; measured 99.8 %).
     const std::size_t a = t.samples.size() / 4, b = 3 * t.samples.size() / 4;
     double travelled = 0;
     for (std::size_t i = a; i < b; ++i) travelled += (t.samples[i + 1].position - t.samples[i].position).norm();
     const double average = travelled / (t.samples[b].time - t.samples[a].time);
     std::printf("chorded circle: average %.1f mm/s of %.0f programmed\n", average, feed);
-    EXPECT_GT(average, 0.7 * feed) << "average " << average << " mm/s";
+    EXPECT_GT(average, 0.9 * feed) << "average " << average << " mm/s";
     EXPECT_EQ(m.end_position, blocks.back().target);
 }
 

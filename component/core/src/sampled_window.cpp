@@ -147,11 +147,12 @@ SampledWindow::Sweep SampledWindow::start_sweep() const {
 }
 
 bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta) {
-    if (w.known > 0)  // the chord from the previous sample
-        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
-            w.closest[j] = std::min(w.closest[j], chord_distance(corner(w.cursor + j).point, w.history[0], p, axes_));
-    if (keep)
-        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
+    // Closest approach of the chord from the previous sample to junction i. At speed the tool may
+    // pass several short segments between two samples: each junction it passes meets the chord.
+    auto approach = [&](std::size_t i, double best) {
+        return w.known > 0 ? std::min(best, chord_distance(corner(i).point, w.history[0], p, axes_)) : best;
+    };
+    for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) w.closest[j] = approach(w.cursor + j, w.closest[j]);
     bool ok = true;
     // The tool has passed a junction once the segment after it is as near as the one before. Ties
     // advance: a retract and its plunge lie on one line, and the cursor must not stay behind.
@@ -161,9 +162,11 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
         if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
         w.closest[0] = w.closest[1];
         w.closest[1] = w.closest[2];
-        w.closest[2] = w.cursor + 3 < corner_count_ ? corner(w.cursor + 3).best : infinity;
+        w.closest[2] = w.cursor + 3 < corner_count_ ? approach(w.cursor + 3, corner(w.cursor + 3).best) : infinity;
         ++w.cursor;
     }
+    if (keep)
+        for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) corner(w.cursor + j).best = w.closest[j];
     w.history[2] = w.history[1];
     w.history[1] = w.history[0];
     w.history[0] = p;
@@ -175,10 +178,10 @@ bool SampledWindow::check_sample(Sweep& w, const Sample& s, double contour_epsil
                                  const AxisVector& candidate_delta, bool consecutive) const {
     if (check_limits_ && !within_limits(s)) return false;
     if (check_limits_ && consecutive && !differences_within_limits(w, s.position)) return false;
-    if (meaning_ == ToleranceMeaning::contour && std::isfinite(contour_epsilon) &&
-        path_distance(s.position, w.cursor, candidate_delta) > contour_epsilon)
-        return false;
-    return const_cast<SampledWindow*>(this)->visit(w, s.position, false, candidate_delta);  // no writes
+    // Find the junction the tool is at first: between samples it may pass several short segments.
+    if (!const_cast<SampledWindow*>(this)->visit(w, s.position, false, candidate_delta)) return false;  // no writes
+    return meaning_ != ToleranceMeaning::contour || !std::isfinite(contour_epsilon) ||
+           path_distance(s.position, w.cursor, candidate_delta) <= contour_epsilon;
 }
 
 bool SampledWindow::feasible(const Candidate& c, int stride) const {
