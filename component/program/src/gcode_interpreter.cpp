@@ -222,10 +222,12 @@ int Interpreter::arc_turns(const LineWords& w, const Where& at) const {
 }
 
 // The FIR chain pulls a circle of radius R inwards by about v^2 * sum(T_i^2) / (24 R): keep that within
-// the tolerance the chords blend with.
+// 90 % of the tolerance the chords blend with. The rest is for the chords and the line-arc junctions;
+// a shrink of the whole tolerance leaves the planner no room and the feed goes stop-and-go.
 double Interpreter::arc_speed_limit(double radius, double tolerance) const {
+    constexpr double shrink_share = 0.9;
     if (!(filter_time_squares_ > 0.0) || !std::isfinite(tolerance) || !(tolerance > 0.0)) return infinity;
-    return std::sqrt(24.0 * radius * tolerance / filter_time_squares_);
+    return std::sqrt(24.0 * radius * shrink_share * tolerance / filter_time_squares_);
 }
 
 void Interpreter::push(const AxisVector& target, double feed, Termination termination, double tolerance,

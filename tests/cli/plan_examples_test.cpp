@@ -1,0 +1,65 @@
+// firtp plan on the example programs: tolerance, limits and an end exactly on the last point, and
+// the feed kept on dense chords and arcs (cycle time near the closed form: no stop-and-go).
+#include "cli_runner.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace firtp::cli_test {
+namespace {
+
+using nlohmann::json;
+
+struct Example {
+    std::string program;
+    std::vector<std::string> flags;
+    double tolerance;             // mm, the program's G64 P
+    double max_time_over_closed;  // cycle time / closed form, at most
+};
+
+void PrintTo(const Example& e, std::ostream* os) { *os << e.program; }
+
+json plan(const Example& e, const TempDir& dir) {
+    std::vector<std::string> args{"plan", example(e.program).string(), "--json", (dir / "out.json").string()};
+    args.insert(args.end(), e.flags.begin(), e.flags.end());
+    const Outcome outcome = run_firtp(args);
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return outcome.exit_code == 0 ? json::parse(read_file(dir / "out.json")) : json{};
+}
+
+class PlanExamples : public ::testing::TestWithParam<Example> {};
+
+TEST_P(PlanExamples, HoldTheToleranceAndTheLimitsAndKeepTheFeed) {
+    const Example& e = GetParam();
+    const TempDir dir;
+    const json report = plan(e, dir);
+    ASSERT_FALSE(report.is_null());
+    const json& m = report["measured"];
+    EXPECT_LE(m["max_corner_error_mm"].get<double>(), e.tolerance * (1 + 1e-9));
+    EXPECT_EQ(m["end_error_mm"].get<double>(), 0.0);
+    // Built-in machine: X Y at 5000 mm/s^2, Z at 2500 (five_axis.ini: its own), jerk 1e5 on all.
+    for (const json& j : m["max_axis_jerk"]) EXPECT_LE(j.get<double>(), 1e5 * (1 + 1e-6));
+    const double cycle = report["cycle_time_s"].get<double>();
+    const double closed = report["closed_form_cycle_time_s"].get<double>();
+    std::printf("%s: cycle %.3f s, closed form %.3f s (%.3f)\n", e.program.c_str(), cycle, closed, cycle / closed);
+    EXPECT_LE(cycle, e.max_time_over_closed * closed);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Examples, PlanExamples,
+    ::testing::Values(Example{"arcs.ngc", {}, 0.02, 1.03},          // measured 1.010
+                      Example{"cam_contour.ngc", {}, 0.02, 1.15},   // measured 1.10 (zig-zag corners)
+                      Example{"five_axis.ngc", {"--ini", FIRTP_EXAMPLES "/five_axis.ini"}, 0.05, 1.03}),
+    [](const ::testing::TestParamInfo<Example>& param) {
+        std::string name = param.param.program.substr(0, param.param.program.find('.'));
+        std::erase(name, '_');
+        return name;
+    });
+
+}  // namespace
+}  // namespace firtp::cli_test
