@@ -13,6 +13,7 @@ ComponentSettings checked(const ComponentSettings& s) {
     if (!(s.planner.period > 0.0)) throw std::invalid_argument("the servo period must be positive");
     if (s.max_blocks_per_period < 1) throw std::invalid_argument("max_blocks_per_period must be at least 1");
     if (!(s.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
+    if (const char* why = validate_rate(s.planner); *why) throw std::invalid_argument(why);
     return s;
 }
 
@@ -25,7 +26,7 @@ bool next_record(BlockSource& source, stream::BlockRecord& record) {
 
 ComponentCore::ComponentCore(const ComponentSettings& settings)
     : settings_(checked(settings)), chain_(settings.planner.filters),
-      interpolator_(chain_, settings.planner.period, settings.queue, AxisVector::Zero()),
+      interpolator_(chain_, settings.planner.period, settings.queue, AxisVector::Zero(), rate_limits(settings.planner)),
       planner_(settings.planner, chain_, AxisVector::Zero()) {}
 
 void ComponentCore::fail(ComponentError error) {
@@ -110,7 +111,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             aborting_ = true;
         }
         const bool stopping = in.hold || in.abort || aborting_;
-        interpolator_.set_rate(stopping ? 0.0 : std::clamp(in.feed_scale, 0.0, settings_.max_feed_scale));
+        interpolator_.set_rate(stopping ? 0.0 : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
 
         if (in.abort || aborting_) {  // the operator stopped this program: refuse the rest of it
             refuse_inputs(in, source);

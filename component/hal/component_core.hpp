@@ -35,7 +35,6 @@ struct ComponentSettings {
     std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
     double default_tolerance = 0.05;     // for pin blocks whose tolerance is 0
-    double max_feed_scale = 2.0;
 };
 
 struct ComponentInputs {

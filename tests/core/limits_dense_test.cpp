@@ -98,8 +98,9 @@ TEST(AxisLimits, ReversalWithFullOverlapWouldDoubleTheAccelerationAndIsHeldToThe
     for (const AxisState& s : free.samples) a_free = std::max(a_free, std::abs(s.acceleration[0]));
     for (const AxisState& s : limited.samples) a_limited = std::max(a_limited, std::abs(s.acceleration[0]));
     EXPECT_GT(a_free, 7000.0);           // the overlapped reversal adds the two blocks' accelerations
-    EXPECT_LE(a_limited, 5000.0 * (1 + 1e-9));
-    EXPECT_GT(a_limited, 4900.0);        // and the limit is used, not wasted
+    // The plan keeps 20 % of the acceleration for override and hold ramps (rate_reserve).
+    EXPECT_LE(a_limited, 4000.0 * (1 + 1e-9));
+    EXPECT_GT(a_limited, 3920.0);        // and the rest is used, not wasted
 }
 
 TEST(DensePaths, ChordedCircleKeepsTheFeedAndTheTolerance) {

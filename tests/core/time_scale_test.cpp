@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 
 using namespace firtp;
@@ -86,7 +87,8 @@ TEST(TimeScale, HoldStopsOnThePathWithinTheRampAndResumes) {
         if (k > 150 && k < 600 && stopped_at < 0 && m.interpolator.time_scale().rate() == 0.0) stopped_at = k;
     });
     ASSERT_GT(stopped_at, 0);
-    EXPECT_LE(stopped_at - 150, 201);  // full rate to 0 within the 0.2 s ramp
+    // Full rate to 0 within the S-curve's stop time (0.25 s without axis limits).
+    EXPECT_LE(stopped_at - 150, std::ceil(stop_time(RateLimits{}, 1.0) / 0.001) + 1);
     held = m.samples[stopped_at + 1].position;
     for (int k = stopped_at + 1; k < 600; ++k) {
         EXPECT_EQ(m.samples[k].position, held);

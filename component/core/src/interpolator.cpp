@@ -2,8 +2,9 @@
 
 namespace firtp {
 
-Interpolator::Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start)
-    : chain_(&chain), period_(period), ring_(capacity), base_(start) {}
+Interpolator::Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start,
+                           const RateLimits& rates)
+    : chain_(&chain), period_(period), ring_(capacity), base_(start), scale_(rates) {}
 
 void Interpolator::reset(const AxisVector& position) {
     head_ = 0;
@@ -45,11 +46,12 @@ void Interpolator::tick(AxisState& out) {
         jerk += b.delta * s.jerk;
         line_ = b.line;
     }
-    // Chain rule for the scaled clock (rate r, slope r'): v = r p', a = r^2 p'' + r' p'.
-    const double r = scale_.rate(), dr = scale_.slope();
+    // Chain rule for the scaled clock (rate r, r', r''): v = r p', a = r^2 p'' + r' p',
+    // j = r^3 p''' + 3 r r' p'' + r'' p'.
+    const double r = scale_.rate(), dr = scale_.slope(), ddr = scale_.curvature();
     out.velocity = r * velocity;
     out.acceleration = r * r * acceleration + dr * velocity;
-    out.jerk = r * r * r * jerk + 3.0 * r * dr * acceleration;
+    out.jerk = r * r * r * jerk + 3.0 * r * dr * acceleration + ddr * velocity;
     if (count_ == 0) line_ = 0;
     out.line = line_;
 

@@ -64,4 +64,24 @@ FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
     return f;
 }
 
+MachineLimits planned_limits(const PlannerParameters& parameters) {
+    const double m = std::max(parameters.max_rate, 1.0), keep = 1.0 - parameters.rate_reserve;
+    MachineLimits planned = parameters.limits;
+    for (AxisLimits& l : planned.axis) {
+        l.max_velocity /= m;
+        l.max_acceleration *= keep / (m * m);
+        l.max_jerk *= keep / (m * m * m);
+    }
+    planned.max_linear_velocity /= m;
+    return planned;
+}
+
+const char* validate_rate(const PlannerParameters& parameters) {
+    if (!(std::isfinite(parameters.max_rate) && parameters.max_rate >= 1.0))
+        return "the highest feed override must be at least 1 (100 %)";
+    if (!(parameters.rate_reserve > 0.0 && parameters.rate_reserve < 1.0))
+        return "the rate reserve must lie between 0 and 1 (a share of the acceleration and jerk limits)";
+    return "";
+}
+
 }  // namespace firtp

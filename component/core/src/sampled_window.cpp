@@ -47,7 +47,7 @@ struct Ranges {
 }  // namespace
 
 SampledWindow::SampledWindow(const FirChain& chain, const PlannerParameters& parameters, std::size_t max_corners)
-    : chain_(&chain), period_(parameters.period), meaning_(parameters.tolerance_meaning), limits_(parameters.limits),
+    : chain_(&chain), period_(parameters.period), meaning_(parameters.tolerance_meaning), limits_(planned_limits(parameters)),
       axes_(std::clamp(parameters.limits.axes, 1, max_axes)),
       window_ticks_(static_cast<std::int64_t>(std::ceil(chain.delay() / parameters.period)) + 2),
       tail_(static_cast<std::size_t>(window_ticks_) + 1), prefix_(tail_.size() + 1),

@@ -10,7 +10,7 @@ namespace firtp {
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                            std::span<const Block> blocks) {
     const FirChain chain(parameters.filters);
-    Interpolator interpolator(chain, parameters.period, parameters.queue_capacity, start);
+    Interpolator interpolator(chain, parameters.period, parameters.queue_capacity, start, rate_limits(parameters));
     Planner planner(parameters, chain, start);
 
     Trajectory trajectory;

@@ -33,7 +33,9 @@ struct PlannedBlock {
 
 class Interpolator {
 public:
-    Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start);
+    // `rates` bounds how fast override, hold and abort change the rate (rate_limits(parameters)).
+    Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start,
+                 const RateLimits& rates = {});
 
     // Non-real-time setup: rest at `position`, queue empty, clock kept.
     void reset(const AxisVector& position);
@@ -41,7 +43,7 @@ public:
     bool push(const PlannedBlock& block);  // false when full; nothing changes then
     void tick(AxisState& out);             // state at the current clock, then one period on
 
-    // Feed override (>= 0) or hold (rate 0), reached along a ramp.
+    // Feed override (>= 0) or hold (rate 0), reached along an S-curve ramp.
     void set_rate(double rate) { scale_.set_target(rate); }
     // Stop along the path, then drop every queued block and rest where the tool stopped.
     void abort() { aborting_ = true; }

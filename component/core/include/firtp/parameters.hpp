@@ -43,7 +43,17 @@ struct PlannerParameters {
     double fixed_overlap = -1.0;        // Tk forced at every blended corner (s); < 0: from the tolerance
     std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
     MachineLimits limits;               // held at every sample, overlaps included (0 = not limited)
+    double max_rate = 1.0;              // highest feed override (MAX_FEED_OVERRIDE): limits hold up to it
+    double rate_reserve = 0.2;          // share of the acceleration and jerk limits kept for rate ramps
 };
+
+// What a plan at rate 1 may use so that any rate up to max_rate M, ramped within rate_limits()
+// (time_scale.hpp), keeps `limits`: v / M, a (1 - r) / M^2, j (1 - r) / M^3 (r = rate_reserve).
+// Time scaling leaves the path alone: overlaps, and so corner errors, do not depend on the rate.
+MachineLimits planned_limits(const PlannerParameters& parameters);
+
+// Checks max_rate >= 1 and 0 < rate_reserve < 1, finite; returns an empty string or the reason.
+const char* validate_rate(const PlannerParameters& parameters);
 
 // T1 from velocity/acceleration, T2 from acceleration/jerk (Eq. 4: a = v / T1, j = a / T2),
 // then stage i raised to the next multiple k / f_i of the i-th structural mode (Eq. 10).

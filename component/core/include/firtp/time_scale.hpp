@@ -1,41 +1,54 @@
 // Feed override, hold and abort as time scaling: the filters' clock advances by rate * period each
 // servo period, so the tool stays on the planned path at any rate. The rate follows its target
-// with a bounded slope (full scale in `ramp_time`), so speed changes are continuous.
+// along an S-curve: its slope r' and the slope's change r'' are bounded (RateLimits), so the
+// axes see, by the chain rule, v = r p', a = r^2 p'' + r' p', j = r^3 p''' + 3 r r' p'' + r'' p'.
 #pragma once
+
+#include <firtp/parameters.hpp>
 
 namespace firtp {
 
+struct RateLimits {
+    double max_slope = 5.0;         // |r'|, 1/s (full rate in 0.2 s)
+    double max_curvature = 100.0;   // |r''|, 1/s^2
+};
+
+// The fastest ramps that keep the axis limits when the plan used only planned_limits(): the ramp
+// terms r' p' and 3 r r' p'' + r'' p' fit in the reserve r of acceleration and jerk, with p' and
+// p'' at their planned maxima. Without axis limits: the defaults above.
+RateLimits rate_limits(const PlannerParameters& parameters);
+
+// Time from rate `from` to rest along the S-curve (the bound a hold or abort stops within).
+double stop_time(const RateLimits& limits, double from);
+
 class TimeScale {
 public:
-    explicit TimeScale(double ramp_time = 0.2) : ramp_time_(ramp_time) {}
+    explicit TimeScale(const RateLimits& limits = {}) : limits_(limits) {}
 
     void set_target(double rate) { target_ = rate < 0.0 ? 0.0 : rate; }
     double target() const { return target_; }
     double rate() const { return rate_; }
-    double slope() const { return slope_; }  // d rate / dt over the last period, 1/s
+    double slope() const { return slope_; }          // r' at the end of the last period, 1/s
+    double curvature() const { return curvature_; }  // r'' over the last period, 1/s^2
     bool stopped() const { return rate_ == 0.0 && target_ == 0.0; }
+    const RateLimits& limits() const { return limits_; }
 
     // Nothing moves: take the target at once.
     void snap() {
         rate_ = target_;
         slope_ = 0.0;
+        curvature_ = 0.0;
     }
 
-    // One servo period: returns how far the filters' clock moves, in periods.
-    double advance(double period) {
-        const double step = ramp_time_ > 0.0 ? period / ramp_time_ : 1e300;
-        const double before = rate_;
-        if (rate_ < target_) rate_ = rate_ + step < target_ ? rate_ + step : target_;
-        else if (rate_ > target_) rate_ = rate_ - step > target_ ? rate_ - step : target_;
-        slope_ = (rate_ - before) / period;
-        return 0.5 * (before + rate_);  // exact for a linear ramp
-    }
+    // One servo period: returns how far the filters' clock moves, in periods (exactly 1 at rate 1).
+    double advance(double period);
 
 private:
-    double ramp_time_;
+    RateLimits limits_;
     double target_ = 1.0;
     double rate_ = 1.0;
     double slope_ = 0.0;
+    double curvature_ = 0.0;
 };
 
 }  // namespace firtp

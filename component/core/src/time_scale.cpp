@@ -1,0 +1,84 @@
+#include <firtp/time_scale.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace firtp {
+
+RateLimits rate_limits(const PlannerParameters& parameters) {
+    // Per axis, with p' <= V_p, p'' <= A_p planned and the rate at most M:
+    //   a: r' V_p <= reserve A;   j: 3 M r' A_p <= reserve J / 2,  r'' V_p <= reserve J - 3 M r' A_p.
+    const MachineLimits planned = planned_limits(parameters);
+    const double m = std::max(parameters.max_rate, 1.0), reserve = parameters.rate_reserve;
+    double slope = HUGE_VAL;
+    for (int i = 0; i < parameters.limits.axes; ++i) {
+        const AxisLimits& l = parameters.limits.axis[i];
+        const AxisLimits& p = planned.axis[i];
+        if (p.max_velocity > 0.0 && l.max_acceleration > 0.0) slope = std::min(slope, reserve * l.max_acceleration / p.max_velocity);
+        if (p.max_acceleration > 0.0 && l.max_jerk > 0.0)
+            slope = std::min(slope, reserve * l.max_jerk / (6.0 * m * p.max_acceleration));
+    }
+    if (!std::isfinite(slope)) return RateLimits{};
+    double curvature = HUGE_VAL;
+    for (int i = 0; i < parameters.limits.axes; ++i) {
+        const AxisLimits& l = parameters.limits.axis[i];
+        const AxisLimits& p = planned.axis[i];
+        if (p.max_velocity > 0.0 && l.max_jerk > 0.0)
+            curvature = std::min(curvature, (reserve * l.max_jerk - 3.0 * m * slope * p.max_acceleration) / p.max_velocity);
+    }
+    RateLimits limits{slope, std::isfinite(curvature) ? curvature : RateLimits{}.max_curvature * slope / RateLimits{}.max_slope};
+    return limits;
+}
+
+double stop_time(const RateLimits& limits, double from) {
+    const double s = limits.max_slope, c = limits.max_curvature;
+    if (from <= 0.0) return 0.0;
+    if (from >= s * s / c) return from / s + s / c;  // reaches the full slope
+    return 2.0 * std::sqrt(from / c);
+}
+
+namespace {
+
+// Rate covered while the slope v > 0 falls by `reach` a period to 0 (trapezoids, as advance()).
+double braking_distance(double v, double reach, double period) {
+    if (v <= 0.0) return 0.0;
+    const double m = std::ceil(v / reach);
+    return period * (m * v - reach * m * (m - 1.0) / 2.0 - 0.5 * v);
+}
+
+}  // namespace
+
+double TimeScale::advance(double period) {
+    const double before = rate_, slope_before = slope_;
+    const double gap = target_ - rate_;
+    if (gap == 0.0 && slope_ == 0.0) {
+        curvature_ = 0.0;
+        return rate_;
+    }
+    // In the direction of the target: the fastest slope this period that can still brake, a
+    // period at a time, without passing it.
+    const double sign = gap > 0.0 ? 1.0 : -1.0, distance = std::abs(gap), slope = slope_ * sign;
+    const double reach = limits_.max_curvature * period;
+    const double lo = std::max(slope - reach, -limits_.max_slope), hi = std::min(slope + reach, limits_.max_slope);
+    auto step = [&](double x) { return 0.5 * (slope + x) * period; };
+    auto stops_in_time = [&](double x) { return x <= 0.0 || distance - step(x) >= braking_distance(x, reach, period); };
+    double next = lo;
+    if (stops_in_time(hi)) {
+        next = hi;
+    } else if (stops_in_time(lo)) {
+        double a = lo, b = hi;
+        for (int i = 0; i < 48; ++i) (stops_in_time(0.5 * (a + b)) ? a : b) = 0.5 * (a + b);
+        next = a;
+    }
+    if (next <= 0.0 && slope > 0.0 && distance - step(next) <= 1e-12) {  // lands on the target
+        rate_ = target_;
+        slope_ = 0.0;
+    } else {
+        slope_ = next * sign;
+        rate_ = std::max(rate_ + step(next) * sign, 0.0);
+    }
+    curvature_ = (slope_ - slope_before) / period;
+    return 0.5 * (before + rate_);
+}
+
+}  // namespace firtp

@@ -1,0 +1,170 @@
+// Feed override, hold and resume at random moments, on machines with axis limits: the S-curve
+// rate ramps fit in the reserve the planner leaves (rate_reserve), so velocity and acceleration
+// hold at every sample, and velocity, acceleration and jerk in the finite differences (what a drive
+// sees; between the planned instants the FIR output's jerk steps may add up for less than a period,
+// which only shifted samples can show); the path, and so the tolerance, does
+// not depend on the rate; holds stop within stop_time(); the end is exact. Seeded.
+#include "support/reference.hpp"
+
+#include <firtp/interpolator.hpp>
+#include <firtp/measure.hpp>
+#include <firtp/planner.hpp>
+#include <firtp/time_scale.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+using namespace firtp;
+using firtp::test::xyz;
+
+namespace {
+
+MachineLimits limits(double v, double a, double j) {
+    MachineLimits l;
+    l.axes = 3;
+    for (int i = 0; i < 3; ++i) l.axis[i] = {v, a, j};
+    return l;
+}
+
+struct Outcome {
+    std::vector<AxisState> samples;
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    double longest_stop = 0.0;  // s, from a hold to rest
+};
+
+// Plans `blocks` and runs them, changing the rate at the given ticks.
+Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const std::vector<std::pair<int, double>>& events) {
+    const FirChain chain(p.filters);
+    Interpolator interpolator(chain, p.period, 64, AxisVector::Zero(), rate_limits(p));
+    Planner planner(p, chain, AxisVector::Zero());
+    Outcome r;
+    std::size_t next = 0, event = 0;
+    int hold_tick = -1;
+    for (int k = 0; k < 2000000; ++k) {
+        for (; next < blocks.size(); ++next) {
+            const Result result = planner.add(blocks[next], interpolator);
+            if (result == Result::queue_full) break;
+            EXPECT_EQ(result, Result::ok);
+            r.points.push_back(blocks[next].target);
+        }
+        for (; event < events.size() && events[event].first == k; ++event) {
+            interpolator.set_rate(events[event].second);
+            if (events[event].second == 0.0 && hold_tick < 0) hold_tick = k;
+            if (events[event].second > 0.0) hold_tick = -1;
+        }
+        AxisState s;
+        interpolator.tick(s);
+        r.samples.push_back(s);
+        if (hold_tick >= 0 && interpolator.time_scale().stopped()) {
+            r.longest_stop = std::max(r.longest_stop, (k - hold_tick) * p.period);
+            hold_tick = -1;
+        }
+        if (next == blocks.size() && interpolator.idle() && event == events.size()) break;
+    }
+    return r;
+}
+
+double worst_ratio(const std::vector<AxisState>& samples, const MachineLimits& l) {
+    double worst = 0.0;
+    for (const AxisState& s : samples)
+        for (int a = 0; a < l.axes; ++a) {
+            worst = std::max(worst, std::abs(s.velocity[a]) / l.axis[a].max_velocity);
+            worst = std::max(worst, std::abs(s.acceleration[a]) / l.axis[a].max_acceleration);
+        }
+    return worst;
+}
+
+}  // namespace
+
+TEST(RateLimits, FromTheAxisLimitsAndTheReserve) {
+    PlannerParameters p;
+    p.limits = limits(300, 5000, 1e5);
+    const RateLimits r = rate_limits(p);
+    // r' <= min(0.2 * 5000 / 300, 0.2 * 1e5 / (6 * 4000)); r'' = (0.2 * 1e5 - 3 r' 4000) / 300
+    EXPECT_NEAR(r.max_slope, 0.2e5 / 24000, 1e-12);
+    EXPECT_NEAR(r.max_curvature, (0.2e5 - 3 * r.max_slope * 4000) / 300, 1e-9);
+    EXPECT_NEAR(stop_time(r, 1.0), 1 / r.max_slope + r.max_slope / r.max_curvature, 1e-12);
+    std::printf("built-in machine: hold from 100 %% within %.3f s\n", stop_time(r, 1.0));
+    p.max_rate = 1.5;  // planned for 150 %: v / 1.5, a 0.8 / 2.25, j 0.8 / 3.375
+    const MachineLimits planned = planned_limits(p);
+    EXPECT_NEAR(planned.axis[0].max_velocity, 200, 1e-12);
+    EXPECT_NEAR(planned.axis[0].max_acceleration, 5000 * 0.8 / 2.25, 1e-9);
+    EXPECT_NEAR(planned.axis[0].max_jerk, 1e5 * 0.8 / 3.375, 1e-6);
+    p.rate_reserve = 0.0;
+    EXPECT_STREQ(validate_rate(p), "the rate reserve must lie between 0 and 1 (a share of the acceleration and jerk limits)");
+    p.rate_reserve = 0.2;
+    p.max_rate = 0.5;
+    EXPECT_STREQ(validate_rate(p), "the highest feed override must be at least 1 (100 %)");
+}
+
+TEST(RateLimits, OverrideAndHoldAtRandomMomentsKeepLimitsToleranceAndEnd) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0.0, worst_stop_ratio = 0.0;
+    int holds = 0;
+    for (int k = 0; k < 120; ++k) {
+        PlannerParameters p;
+        p.limits = limits(100 + 300 * unit(rng), 1000 + 9000 * unit(rng), 2e4 + 3e5 * unit(rng));
+        p.filters = test::chain_of({0.02 + 0.08 * unit(rng), 0.01 + 0.03 * unit(rng)});
+        if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
+        p.max_rate = k % 2 == 0 ? 1.0 : 1.0 + unit(rng);
+        std::vector<Block> blocks;
+        AxisVector at = AxisVector::Zero();
+        const int n = 3 + static_cast<int>(rng() % 8);
+        for (int i = 0; i < n; ++i) {
+            const AxisVector d = xyz(unit(rng) - 0.5, unit(rng) - 0.5, 0.2 * (unit(rng) - 0.5)).normalized();
+            at += d * (1 + 30 * unit(rng));
+            Block b;
+            b.target = at;
+            b.feed = 20 + 380 * unit(rng);
+            b.tolerance = 0.01 + 0.5 * unit(rng);
+            b.line = i + 1;
+            blocks.push_back(b);
+        }
+        const Outcome reference = run(p, blocks, {});
+        // Rate changes at random ticks while moving: overrides up to max_rate, holds, resumes.
+        std::vector<std::pair<int, double>> events;
+        int tick = 0;
+        const int moving = static_cast<int>(reference.samples.size());
+        for (int e = 0; e < 6; ++e) {
+            tick += 1 + static_cast<int>(unit(rng) * moving / 4);
+            const double u = unit(rng);
+            events.emplace_back(tick, u < 0.3 ? 0.0 : u < 0.5 ? p.max_rate : p.max_rate * unit(rng));
+        }
+        events.emplace_back(tick + 1 + static_cast<int>(unit(rng) * 500), 1.0);  // finish at 100 %
+        const Outcome r = run(p, blocks, events);
+        SCOPED_TRACE("program " + std::to_string(k));
+        const double ratio = worst_ratio(r.samples, p.limits);
+        worst = std::max(worst, ratio);
+        ASSERT_LE(ratio, 1.0 + 1e-6);
+        const Measured m = measure(r.samples, r.points, p.period), m0 = measure(reference.samples, reference.points, p.period);
+        for (int a = 0; a < 3; ++a) {  // finite differences, as a drive sees them
+            ASSERT_LE(m.max_velocity[a], p.limits.axis[a].max_velocity * (1 + 1e-6));
+            ASSERT_LE(m.max_acceleration[a], p.limits.axis[a].max_acceleration * (1 + 1e-6));
+            ASSERT_LE(m.max_jerk[a], p.limits.axis[a].max_jerk * (1 + 1e-6));
+        }
+        // The path does not depend on the rate: corner errors as at 100 %. After a rate change the
+        // samples fall between the planned ones, and the chords between them may pass a corner up
+        // to 0.1 um further away than the planned samples' chords.
+        ASSERT_EQ(m.corner_errors.size(), m0.corner_errors.size());
+        for (std::size_t c = 0; c < m.corner_errors.size(); ++c) {
+            ASSERT_LE(m.corner_errors[c], blocks[c].tolerance + 1e-4);
+            ASSERT_NEAR(m.corner_errors[c], m0.corner_errors[c], 0.01 * blocks[c].tolerance + 1e-6);
+        }
+        ASSERT_EQ(m.end_position, blocks.back().target);
+        if (r.longest_stop > 0.0) {
+            ++holds;
+            const double bound = stop_time(rate_limits(p), p.max_rate) + p.period;
+            worst_stop_ratio = std::max(worst_stop_ratio, r.longest_stop / bound);
+            ASSERT_LE(r.longest_stop, bound);
+        }
+    }
+    EXPECT_GT(holds, 20);
+    EXPECT_GT(worst, 0.95);  // the limits are reached, not only respected from afar
+    std::printf("120 programs with rate changes: worst |v|,|a| / limit %.4f; %d holds, longest %.2f of the bound\n",
+                worst, holds, worst_stop_ratio);
+}
