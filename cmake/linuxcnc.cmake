@@ -23,7 +23,7 @@
 #   rtapi_info_* (module information and parameters, read by rtapi_app with dlsym) and EXPORTS
 #   (e.g. the tp* functions a planner module provides to motmod): rtapi_app opens every module
 #   RTLD_GLOBAL, so everything else, the C++ core included, stays local to the module.
-#   The module is added to the target `install-linuxcnc`.
+#   The module is added to the target `install-linuxcnc` (which, without LinuxCNC, fails saying why).
 #   Call it only when FIRTP_LINUXCNC_ENABLED.
 include_guard(GLOBAL)
 include(CheckCXXCompilerFlag)
@@ -72,6 +72,11 @@ if(FIRTP_LINUXCNC_ENABLED)
   endif()
   add_custom_target(install-linuxcnc
     COMMENT "LinuxCNC modules installed in ${FIRTP_LINUXCNC_MODULE_DIR}")
+else()
+  add_custom_target(install-linuxcnc
+    COMMAND ${CMAKE_COMMAND} -E echo "install-linuxcnc: no LinuxCNC modules were built: LinuxCNC's headers are not in ${FIRTP_LINUXCNC_INCLUDE_DIR} (linuxcnc-uspace-dev) or FIRTP_LINUXCNC is OFF"
+    COMMAND ${CMAKE_COMMAND} -E false
+    VERBATIM)
 endif()
 
 function(firtp_linuxcnc_add_module name)

@@ -76,7 +76,8 @@ lcnc_ms=$((($(date +%s%N) - lcnc_begin) / 1000000))
 overruns=$(awk '$NF == "sampler.0.overruns" {print $(NF - 1)}' "$work/halrun.log")
 [ "$overruns" = 0 ] \
   || { echo "FAIL: the sampler lost samples"; cat "$work/halrun.log"; exit 1; }
-echo "halrun: $lcnc_ms ms (POSIX non-realtime), no sampler overruns"
+tmax=$(awk '$NF == "firtp.update.tmax" {print $(NF - 1)}' "$work/halrun.log")
+echo "halrun: $lcnc_ms ms (POSIX non-realtime), no sampler overruns, longest firtp.update $tmax CPU clocks (firtp.update.tmax)"
 
 # hal-shim, virtual time
 "$firtp_hal" --no-realtime -L "$shim_modules" -f "$work/shim.hal" > "$work/shim.out" 2> "$work/shim.err" \

@@ -197,7 +197,8 @@ int prepare(const std::filesystem::path& ngc, const std::filesystem::path& ini, 
                "start\n",
                "loadusr -w halsampler -c 0 -n ", std::to_string(periods), " samples.txt\n",
                "stop\n",
-               "show pin sampler.0.overruns\n");
+               "show pin sampler.0.overruns\n",
+               "show param firtp.update\n");
     write_file(dir / "linuxcnc.hal", hal);
 
     // shim.hal: the same rows, one period each, then the same pins read.
