@@ -3,7 +3,7 @@
 //   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
 //                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=0] [block_key=K]
 //                [state_key=K] [max_velocity=V,V,..] [max_acceleration=A,..] [max_jerk=J,..]
-//                [stream_depth=4096]
+//                [stream_depth=4096] [max_feed_override=1] [rate_reserve=0.2]
 //   addf firtp.update servo-thread
 //
 // Principle of operation (see component_core.hpp): blocks come in through the firtp.block.*
@@ -63,6 +63,10 @@ static long block_key = firtp::stream::default_block_key;
 RTAPI_MP_LONG(block_key, "hal_stream key of the block stream (0: pins only)");
 static long state_key = firtp::stream::default_state_key;
 RTAPI_MP_LONG(state_key, "hal_stream key of the axis-state stream (0: none)");
+static char* max_feed_override = nullptr;
+RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_OVERRIDE); limits hold up to it (1)");
+static char* rate_reserve = nullptr;
+RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk limits kept for override and hold ramps (0.2)");
 static int stream_depth = 4096;
 RTAPI_MP_INT(stream_depth, "records each stream holds");
 
@@ -244,6 +248,8 @@ firtp::ComponentSettings settings_from_parameters() {
     s.plan_budget_ns = static_cast<std::int64_t>(plan_budget_us) * 1000;
     s.clock_ns = [] { return static_cast<std::int64_t>(rtapi_get_time()); };
     s.default_tolerance = number(tolerance, 0.05);
+    s.planner.max_rate = number(max_feed_override, 1.0);
+    s.planner.rate_reserve = number(rate_reserve, 0.2);
     return s;
 }
 

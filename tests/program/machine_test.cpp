@@ -142,7 +142,12 @@ TEST(Machine, ValueErrorsNameFileLineAndKey) {
 TEST(Machine, FirtpSectionErrors) {
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 2\nT5 = 0.1\n"),
               "mill.ini:3: [FIRTP]T5: unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, "
-              "ARC_CHORD_TOLERANCE)");
+              "ARC_CHORD_TOLERANCE, RATE_RESERVE)");
+    EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 1\n"),
+              "mill.ini:2: [FIRTP]RATE_RESERVE: must be below 1 (a share of the acceleration and jerk limits)");
+    EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 0\n"), "mill.ini:2: [FIRTP]RATE_RESERVE: '0' must be positive");
+    EXPECT_EQ(load_error("[DISPLAY]\nMAX_FEED_OVERRIDE = 0.5\n"),
+              "mill.ini:2: [DISPLAY]MAX_FEED_OVERRIDE: must be at least 1 (100 %)");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 5\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 1.5\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 0\n"), "mill.ini:2: [FIRTP]STAGES: must be a whole number from 1 to 4");
@@ -231,3 +236,14 @@ TEST(Machine, OverrideErrorsNameTheFlag) {
 }
 
 }  // namespace
+
+TEST(Machine, FeedOverrideAndRateReserveReachThePlanner) {
+    const MachineConfig m =
+        firtp::load_machine(IniFile::parse("[DISPLAY]\nMAX_FEED_OVERRIDE = 1.5\n[FIRTP]\nRATE_RESERVE = 0.3\n", "m.ini"));
+    const firtp::PlannerParameters p = m.planner_parameters();
+    EXPECT_EQ(p.max_rate, 1.5);
+    EXPECT_EQ(p.rate_reserve, 0.3);
+    const firtp::PlannerParameters d = firtp::default_machine().planner_parameters();
+    EXPECT_EQ(d.max_rate, 1.0);  // as LinuxCNC: no MAX_FEED_OVERRIDE, no override above 100 %
+    EXPECT_EQ(d.rate_reserve, 0.2);
+}

@@ -65,11 +65,21 @@ std::vector<double> read_modes(const IniFile& ini, const IniFile::Entry& e) {
 
 void read_firtp(const IniFile& ini, MachineConfig& m) {
     static constexpr std::string_view known[] = {"STAGES",    "T1", "T2", "T3", "T4", "MODES",
-                                                 "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE"};
+                                                 "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE",
+                                                 "RATE_RESERVE"};
     for (const IniFile::Entry* e : ini.section("FIRTP"))
         if (std::find(std::begin(known), std::end(known), e->key) == std::end(known))
             fail(ini, *e,
-                 "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, ARC_CHORD_TOLERANCE)");
+                 "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, ARC_CHORD_TOLERANCE, "
+                 "RATE_RESERVE)");
+    if (const auto r = positive(ini, "FIRTP", "RATE_RESERVE")) {
+        if (*r >= 1.0) fail(ini, *ini.find("FIRTP", "RATE_RESERVE"), "must be below 1 (a share of the acceleration and jerk limits)");
+        m.rate_reserve = *r;
+    }
+    if (const auto o = positive(ini, "DISPLAY", "MAX_FEED_OVERRIDE")) {
+        if (*o < 1.0) fail(ini, *ini.find("DISPLAY", "MAX_FEED_OVERRIDE"), "must be at least 1 (100 %)");
+        m.max_feed_override = *o;
+    }
 
     if (const auto stages = ini.number("FIRTP", "STAGES")) {
         if (*stages != std::floor(*stages) || *stages < 1 || *stages > max_stages)
@@ -115,6 +125,8 @@ PlannerParameters MachineConfig::planner_parameters() const {
     p.period = period;
     p.tolerance_meaning = tolerance_meaning;
     p.limits = limits;
+    p.max_rate = max_feed_override;
+    p.rate_reserve = rate_reserve;
     return p;
 }
 

@@ -18,6 +18,8 @@ struct MachineConfig {
     double default_tolerance = 0.05;        // [FIRTP]TOLERANCE, used by G64 without P
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // [FIRTP]TOLERANCE_MEANING corner|contour
     double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
+    double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
+    double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: share of a and j limits kept for override ramps
 
     FilterTimes filter_times() const;       // filter_times_from_limits(limits, stages, given_times, mode_frequencies)
     PlannerParameters planner_parameters() const;
