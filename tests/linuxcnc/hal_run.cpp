@@ -128,7 +128,9 @@ std::string common_header(const firtp::MachineConfig& machine) {
                            " stages=", std::to_string(p.filters.stages),
                            " tolerance=", number_text(machine.default_tolerance),
                            " meaning=", p.tolerance_meaning == firtp::ToleranceMeaning::contour ? "contour" : "corner",
-                           " period_ns=", std::to_string(std::llround(p.period * 1e9)));
+                           " period_ns=", std::to_string(std::llround(p.period * 1e9)),
+                           " max_feed_override=", number_text(p.max_rate),
+                           " rate_reserve=", number_text(p.rate_reserve));
     for (int i = 0; i < p.filters.stages; ++i)
         load += cat(" t", std::to_string(i + 1), "=", number_text(p.filters.T[i]));
     auto per_axis = [&](const char* name, double firtp::AxisLimits::*limit) {
