@@ -22,3 +22,4 @@ check diamond.ngc --ini "$examples/diamond.ini"
 check corner90.ngc
 check steps.ngc
 check steps.ngc --tolerance-meaning contour --t1 0.03 --t2 0.011
+check corner90.ngc --ini "$(dirname "$0")/override.ini"
