@@ -312,9 +312,11 @@ struct TpCore::Impl {
     void plan(const CycleInputs& in) {
         stats.planned = 0;
         stats.plan_ns = 0;
-        if (plan_seq == next_seq || aborting) return;
+        if (aborting) return;
+        // Rebuilt as soon as nothing moves (not only when a move waits), so the first move of a
+        // program does not wait for it.
         if ((dirty || !built()) && plan_chord == 0 && (!built() || interp->idle())) rebuild();
-        if (!built()) return;
+        if (plan_seq == next_seq || !built()) return;
         const bool timed = s.plan_budget_ns > 0 && s.clock_ns != nullptr;
         const std::int64_t begin = now_ns();
         while (plan_seq < next_seq && interp->free() > 0 && stats.planned < s.max_blocks_per_cycle &&
@@ -558,7 +560,14 @@ void TpCore::abort() {
         --I.event_count;
 }
 
-void TpCore::clear() { impl_->rest_at(impl_->state.position); }
+void TpCore::clear() {
+    Impl& I = *impl_;
+    I.rest_at(I.state.position);
+    // As the stock planner's tpClear: the latched mode goes back to plain blending, unsynchronised.
+    I.term_cond = term_parabolic;
+    I.term_tolerance = 0.0;
+    I.spindle_sync = 0.0;
+}
 
 void TpCore::set_position(const Pose& p) {
     if (!finite(p)) return;

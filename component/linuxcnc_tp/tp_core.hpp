@@ -18,9 +18,10 @@
 // - Feed override and hold scale the filters' clock (the tool stays on the path); pause is rate 0;
 //   abort stops on the path, then drops everything (done, depth 0); clear drops at once.
 // - Filter times and axis limits define the planner. LinuxCNC sends the axis limits after the
-//   planner was created, so the planner is rebuilt from them when they change, only while
-//   nothing moves (before the first move of a program). The rebuild allocates; in the LinuxCNC
-//   module operator new draws from an arena reserved at load (tp_arena.cpp).
+//   planner was created, so the planner is rebuilt from them when they change, in a period
+//   where nothing moves (the module passes the limits while idle, so that is before a program's
+//   first move). The rebuild allocates; in the LinuxCNC module operator new draws from an arena
+//   reserved at load (tp_arena.cpp).
 //
 // Real time: every member except the constructor runs in LinuxCNC's servo thread: no
 // allocation (except the rebuild, see above), no locks, no I/O, no exceptions, bounded time.
@@ -54,7 +55,7 @@ struct TpSettings {
     double chord_tolerance = 0.001;    // units: largest sagitta of an arc's chords
     std::size_t moves = 1024;          // moves accepted and not finished, at most
     std::size_t full_margin = 16;      // full() this many moves before the ring is
-    std::size_t blocks = 8192;         // planned blocks not yet retired (interpolator), at most
+    std::size_t blocks = 4096;         // planned blocks not yet retired (interpolator), at most
     int max_blocks_per_cycle = 64;     // planned per period at most
     std::int64_t plan_budget_ns = 250000;  // and only while planning took less than this (0: no time limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
@@ -143,7 +144,7 @@ public:
     void pause();
     void resume();
     void abort();                      // stop on the path, then drop everything
-    void clear();                      // drop everything now, keep the position
+    void clear();                      // drop everything now, keep the position; G64, no sync (as tpClear)
     void set_position(const Pose& p);  // position and goal; drops everything
 
     void run_cycle(const CycleInputs& in);  // one trajectory period

@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""Run a G-code program headless in LinuxCNC 2.9 and check what the planner commanded.
+
+    examples/linuxcnc/run.py PROGRAM.ngc [--tp firtp_tp|tpmod] [--tp-params "t1=0.148 t2=0.089"]
+        [--module build/linuxcnc/firtp_tp.so] [--check-tool build/bin/firtp-tp-check]
+        [--out DIR] [-- CHECK OPTIONS...]
+
+It copies this configuration (firtp_tp.ini, machine.hal, record.hal, bin/firtp-headless) into a
+scratch directory, sets [TRAJ]TPMOD, runs `linuxcnc -r` there (as `nobody` when run as root:
+rtapi_app refuses root), which homes, runs the program and records every servo period, then runs
+firtp-tp-check on the recording (CHECK OPTIONS, e.g. --tolerance 0.5 --limits --jerk 100000, are
+passed on). --module places that firtp_tp.so in LinuxCNC's module directory for the run (rtapi_app
+loads modules from there only) and puts back what was there. Only one HAL session can run on a
+machine: it waits up to 60 s for another to end, and cleans up with `halrun -U`.
+
+Exit status: 0 program completed and every check passed, 1 otherwise, 77 LinuxCNC (or the module)
+is not available (a skipped test).
+"""
+import argparse
+import json
+import os
+import pwd
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CONFIG_FILES = ("firtp_tp.ini", "machine.hal", "record.hal", "tool.tbl", "bin")
+MODULE_DIR = "/usr/lib/linuxcnc/modules"
+REALTIME = "/usr/lib/linuxcnc/realtime"
+SKIP = 77
+
+
+class Skip(Exception):
+    pass
+
+
+def hal_running():
+    return subprocess.run([REALTIME, "status"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
+
+
+def as_user_prefix(work):
+    """The command prefix that runs LinuxCNC unprivileged, and that user's uid/gid."""
+    if os.geteuid() != 0:
+        return [], os.getuid(), os.getgid()
+    user = pwd.getpwnam("nobody")
+    return (["setpriv", "--reuid=%d" % user.pw_uid, "--regid=%d" % user.pw_gid, "--clear-groups"],
+            user.pw_uid, user.pw_gid)
+
+
+class PlacedModule:
+    """This build's module in LinuxCNC's module directory for the run; what was there comes back."""
+
+    def __init__(self, module, backup_dir):
+        self.module = module
+        self.installed = None
+        self.backup = None
+        if module is None:
+            return
+        if not os.path.exists(module):
+            raise Skip("%s was not built (FIRTP_LINUXCNC)" % module)
+        name = os.path.basename(module)
+        target = os.path.join(MODULE_DIR, name)
+        if os.path.exists(target) and open(target, "rb").read() == open(module, "rb").read():
+            return
+        if not os.access(MODULE_DIR, os.W_OK):
+            raise Skip("%s is not this build's and %s is not writable: install it (cmake --build BUILD "
+                       "--target install-linuxcnc, as root) or run as root" % (target, MODULE_DIR))
+        if os.path.exists(target):
+            self.backup = os.path.join(backup_dir, name + ".before")
+            shutil.copy2(target, self.backup)
+        shutil.copy(module, target + ".new")
+        os.rename(target + ".new", target)
+        self.installed = target
+
+    def restore(self):
+        if self.installed is None:
+            return
+        if self.backup is not None:
+            shutil.copy2(self.backup, self.installed + ".new")
+            os.rename(self.installed + ".new", self.installed)
+        else:
+            os.remove(self.installed)
+        self.installed = None
+
+
+def prepare(work, program, tpmod):
+    for name in CONFIG_FILES:
+        source = os.path.join(HERE, name)
+        if os.path.isdir(source):
+            shutil.copytree(source, os.path.join(work, name))
+        else:
+            shutil.copy(source, work)
+    shutil.copy(program, os.path.join(work, "program.ngc"))
+    ini = os.path.join(work, "firtp_tp.ini")
+    text = open(ini).read()
+    text, n = re.subn(r"(?m)^TPMOD = .*$", "TPMOD = " + tpmod, text)
+    if n != 1:
+        raise RuntimeError("firtp_tp.ini has no single TPMOD line")
+    text = re.sub(r"(?m)^OPEN_FILE = .*$", "OPEN_FILE = program.ngc", text)
+    open(ini, "w").write(text)
+    return ini
+
+
+def run_linuxcnc(work, prefix, timeout):
+    env = dict(os.environ, HOME=work)
+    log = open(os.path.join(work, "linuxcnc.log"), "w")
+    command = prefix + ["env", "HOME=" + work, "linuxcnc", "-r", "firtp_tp.ini"]
+    try:
+        status = subprocess.run(command, cwd=work, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                timeout=timeout).returncode
+    except subprocess.TimeoutExpired:
+        status = -1
+    finally:
+        log.close()
+        if hal_running():
+            subprocess.run(prefix + ["env", "HOME=" + work, "halrun", "-U"], cwd=work, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL, timeout=30)
+    return status
+
+
+def find_tool(given):
+    if given:
+        return given
+    for build in ("build", "build-tp"):
+        candidate = os.path.join(HERE, "..", "..", build, "bin", "firtp-tp-check")
+        if os.path.exists(candidate):
+            return os.path.normpath(candidate)
+    raise Skip("firtp-tp-check not found: give --check-tool")
+
+
+def run(program, tp="firtp_tp", tp_params="", module=None, check_tool=None, out=None, check_args=(),
+        timeout=180, quiet=False):
+    """Runs one program; returns (status, report dict or None)."""
+    if shutil.which("linuxcnc") is None or not os.path.exists(REALTIME):
+        raise Skip("LinuxCNC is not installed (linuxcnc-uspace)")
+    tool = find_tool(check_tool)
+    work = tempfile.mkdtemp(prefix="firtp-lcnc-tp.")
+    placed = None
+    try:
+        placed = PlacedModule(module if tp == "firtp_tp" else None, work)
+        for _ in range(60):  # one HAL session per machine: wait for someone else's
+            if not hal_running():
+                break
+            time.sleep(1)
+        else:
+            raise RuntimeError("another HAL session (rtapi_app) is still running after 60 s")
+        prepare(work, program, (tp + " " + tp_params).strip())
+        prefix, uid, gid = as_user_prefix(work)
+        for root, dirs, files in os.walk(work):
+            for name in dirs + files + [""]:
+                os.chown(os.path.join(root, name), uid, gid)
+        began = time.time()
+        status = run_linuxcnc(work, prefix, timeout)
+        wall = time.time() - began
+        result_path = os.path.join(work, "result.json")
+        result = json.load(open(result_path)) if os.path.exists(result_path) else {"completed": False,
+                                                                                     "errors": ["no result"]}
+        report = None
+        check = [tool, os.path.join(work, "samples.txt"), "--ini", os.path.join(work, "firtp_tp.ini"),
+                 "--program", os.path.join(work, "program.ngc"), "--json", os.path.join(work, "check.json")]
+        if os.path.exists(os.path.join(work, "samples_tp.txt")):
+            check += ["--tp-samples", os.path.join(work, "samples_tp.txt")]
+        checked = subprocess.run(check + list(check_args), capture_output=True, text=True) \
+            if os.path.exists(os.path.join(work, "samples.txt")) else None
+        if os.path.exists(os.path.join(work, "check.json")):
+            report = json.load(open(os.path.join(work, "check.json")))
+            report["completed"] = result.get("completed", False)
+            report["errors"] = result.get("errors", [])
+        if not quiet:
+            print("%s with %s: linuxcnc exit %d in %.1f s, program %s" % (
+                os.path.basename(program), tp, status, wall,
+                "completed" if result.get("completed") else "NOT completed"))
+            for e in result.get("errors", []):
+                print("  LinuxCNC error: " + e)
+            if checked is not None:
+                sys.stdout.write(checked.stdout)
+                sys.stderr.write(checked.stderr)
+        ok = status == 0 and result.get("completed") and checked is not None and checked.returncode == 0
+        if not ok and not quiet:
+            log = os.path.join(work, "linuxcnc.log")
+            if os.path.exists(log):
+                print("---- linuxcnc.log (last lines)")
+                print("".join(open(log).readlines()[-30:]))
+        if out:
+            os.makedirs(out, exist_ok=True)
+            for name in ("samples.txt", "samples_tp.txt", "result.json", "check.json", "linuxcnc.log", "firtp_tp.ini"):
+                if os.path.exists(os.path.join(work, name)):
+                    shutil.copy(os.path.join(work, name), out)
+        return (0 if ok else 1), report
+    finally:
+        if placed is not None:
+            placed.restore()
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("program")
+    parser.add_argument("--tp", default="firtp_tp", help="planner module: firtp_tp (default) or tpmod")
+    parser.add_argument("--tp-params", default="jerk=100000 tolerance=0.05",
+                        help="module parameters for firtp_tp")
+    parser.add_argument("--module", help="this build's firtp_tp.so, placed in LinuxCNC's module directory for the run")
+    parser.add_argument("--check-tool", help="firtp-tp-check (default: build/bin or build-tp/bin)")
+    parser.add_argument("--out", help="keep the recording, result and report here")
+    parser.add_argument("--timeout", type=float, default=180)
+    argv = sys.argv[1:]
+    check = argv[argv.index("--") + 1:] if "--" in argv else []
+    a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
+    try:
+        status, _ = run(os.path.abspath(a.program), a.tp, a.tp_params if a.tp == "firtp_tp" else "", a.module,
+                        a.check_tool, a.out, check, a.timeout)
+    except Skip as e:
+        print("SKIPPED: %s" % e)
+        return SKIP
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
