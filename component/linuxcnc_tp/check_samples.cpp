@@ -1,7 +1,8 @@
 // firtp-tp-check: measures what LinuxCNC commanded, period by period, against the program.
 //
 //   firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]
-//                  [--corner-tolerance MM] [--limits] [--jerk J] [--tsc-hz HZ] [--json FILE]
+//                  [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]
+//                  [--lines N,N,...] [--tsc-hz HZ] [--json FILE]
 //   firtp-tp-check --tsc-hz       prints the time-stamp counter's frequency (what HAL's .time counts)
 //
 // SAMPLES is what examples/linuxcnc/record.hal records through halsampler, one line a servo period:
@@ -16,7 +17,9 @@
 // finite differences of the samples (what a drive computes), cycle time from the first moving
 // sample to the first at rest at the end. Checks, each failing the exit status (1): the end is the
 // program's end; with --tolerance the contour error, with --corner-tolerance the corner errors,
-// with --limits every axis' MAX_VELOCITY and MAX_ACCELERATION, with --jerk the jerk of every axis.
+// with --limits every axis' MAX_VELOCITY and MAX_ACCELERATION, with --jerk the jerk of every axis,
+// with --cycle-time the cycle time (default within 2 ms), with --lines the program lines that
+// motion.program-line (tpGetExecId) showed while the tool moved, in order.
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
@@ -62,7 +65,8 @@ struct TpRow {
 [[noreturn]] void usage(const std::string& why) {
     std::cerr << "firtp-tp-check: " << why << "\n"
               << "usage: firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]\n"
-                 "                      [--corner-tolerance MM] [--limits] [--jerk J] [--tsc-hz HZ] [--json FILE]\n"
+                 "                      [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]\n"
+                 "                      [--lines N,N,...] [--tsc-hz HZ] [--json FILE]\n"
                  "       firtp-tp-check --tsc-hz\n";
     std::exit(2);
 }
@@ -132,6 +136,8 @@ int main(int argc, char** argv) {
     }
     std::string samples_path, ini_path, program_path, tp_samples_path, json_path;
     double tolerance = -1.0, corner_tolerance = -1.0, jerk = -1.0, tsc_hz = 0.0;
+    double cycle_time = -1.0, cycle_within = 0.002;
+    std::vector<long> expected_lines;
     bool limits = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -155,6 +161,16 @@ int main(int argc, char** argv) {
         else if (a == "--jerk") jerk = number();
         else if (a == "--tsc-hz") tsc_hz = number();
         else if (a == "--limits") limits = true;
+        else if (a == "--cycle-time") {
+            const std::string v = value();
+            char* end = nullptr;
+            cycle_time = std::strtod(v.c_str(), &end);
+            if (*end == ':') cycle_within = std::strtod(end + 1, &end);
+            if (*end != '\0' || !(cycle_time > 0.0) || !(cycle_within >= 0.0)) usage("--cycle-time S[:WITHIN]");
+        } else if (a == "--lines") {
+            std::istringstream list(value());
+            for (std::string n; std::getline(list, n, ',');) expected_lines.push_back(std::strtol(n.c_str(), nullptr, 10));
+        }
         else if (!a.empty() && a[0] == '-') usage("unknown option " + a);
         else if (samples_path.empty()) samples_path = a;
         else usage("one samples file only");
@@ -254,6 +270,12 @@ int main(int argc, char** argv) {
                               {"overruns", tp_overruns}};
     }
 
+    // Program lines while moving, each once in the order they came.
+    std::vector<long> lines;
+    for (std::size_t k = first; k <= last; ++k)
+        if (rows[k].line != 0 && (lines.empty() || lines.back() != rows[k].line)) lines.push_back(rows[k].line);
+    report["lines"] = lines;
+
     std::vector<std::string> failures;
     auto fail = [&](const std::string& what) { failures.push_back(what); };
     char text[256];
@@ -288,10 +310,23 @@ int main(int argc, char** argv) {
             fail(text);
         }
     }
+    if (cycle_time > 0.0 && std::abs(m.cycle_time - cycle_time) > cycle_within) {
+        std::snprintf(text, sizeof text, "cycle time %.4f s, expected %.4f +- %.4f s", m.cycle_time, cycle_time,
+                      cycle_within);
+        fail(text);
+    }
+    if (!expected_lines.empty() && lines != expected_lines) {
+        std::string seen;
+        for (long l : lines) {
+            if (!seen.empty()) seen += ',';
+            seen += std::to_string(l);
+        }
+        fail("program lines while moving were " + seen);
+    }
     report["failures"] = failures;
 
     std::printf("samples      %zu (%zu moving), %ld overruns\n", rows.size(), samples.size(), overruns);
-    std::printf("cycle time   %.4f s\n", m.cycle_time);
+    std::printf("cycle time   %.4f s; %zu program lines while moving\n", m.cycle_time, lines.size());
     std::printf("contour      max error %.4f mm; corners max %.4f mm; end %.3g mm off\n", m.max_contour_error,
                 m.max_corner_error, end_error);
     std::printf("axes         max velocity %.1f, acceleration %.0f, jerk %.0f (units/s^n, 1 ms differences)\n", max_v,

@@ -60,7 +60,7 @@ class PlacedModule:
         self.backup = None
         if module is None:
             return
-        if not os.path.exists(module):
+        if module == "none" or not os.path.exists(module):
             raise Skip("%s was not built (FIRTP_LINUXCNC)" % module)
         name = os.path.basename(module)
         target = os.path.join(MODULE_DIR, name)
