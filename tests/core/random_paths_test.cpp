@@ -3,6 +3,7 @@
 // Invariants, measured on the sampled output: corner error <= epsilon at every blended corner,
 // end point exact, speed <= F, no NaN.
 #include "support/reference.hpp"
+#include "support/separation.hpp"
 
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
@@ -22,29 +23,6 @@ struct RandomProgram {
     double max_feed = 0.0;
 };
 
-// Closest distance between segments [a0, a1] and [b0, b1] (clamped closest points, Ericson 5.1.9).
-double segment_distance(const AxisVector& a0, const AxisVector& a1, const AxisVector& b0, const AxisVector& b1) {
-    const AxisVector d1 = a1 - a0, d2 = b1 - b0, r = a0 - b0;
-    const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-    double s = 0.0, t = 0.0;
-    if (a <= 1e-300 && e <= 1e-300) return r.norm();
-    if (a <= 1e-300) {
-        t = std::clamp(f / e, 0.0, 1.0);
-    } else {
-        const double c = d1.dot(r);
-        if (e <= 1e-300) {
-            s = std::clamp(-c / a, 0.0, 1.0);
-        } else {
-            const double b = d1.dot(d2), denom = a * e - b * b;
-            s = denom > 1e-300 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-            t = (b * s + f) / e;
-            if (t < 0.0) t = 0.0, s = std::clamp(-c / a, 0.0, 1.0);
-            else if (t > 1.0) t = 1.0, s = std::clamp((b - c) / a, 0.0, 1.0);
-        }
-    }
-    return (a0 + d1 * s - (b0 + d2 * t)).norm();
-}
-
 // Samples are attributed to corners by following the path; that is well defined when segments that
 // are not neighbours stay apart by more than the tool can stray (tolerances) plus a servo step.
 bool well_separated(const RandomProgram& p) {
@@ -54,11 +32,7 @@ bool well_separated(const RandomProgram& p) {
         if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target);
         tolerance = std::max(tolerance, b.tolerance);
     }
-    const double gap = 3 * tolerance + p.max_feed * p.parameters.period;
-    for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        for (std::size_t k = i + 2; k + 1 < points.size(); ++k)
-            if (segment_distance(points[i], points[i + 1], points[k], points[k + 1]) < gap) return false;
-    return true;
+    return test::well_separated(points, 3 * tolerance + p.max_feed * p.parameters.period);
 }
 
 RandomProgram random_program(std::mt19937_64& rng, bool three_d);

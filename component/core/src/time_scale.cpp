@@ -31,10 +31,10 @@ RateLimits rate_limits(const PlannerParameters& parameters) {
 }
 
 double stop_time(const RateLimits& limits, double from) {
-    const double s = limits.max_slope, c = limits.max_curvature;
+    // From rest at `from`: at most from / r' + r' / r'' (AM-GM covers ramps that never reach r').
+    // A rate still rising first needs r' / r'' to turn, never passing its target.
     if (from <= 0.0) return 0.0;
-    if (from >= s * s / c) return from / s + s / c;  // reaches the full slope
-    return 2.0 * std::sqrt(from / c);
+    return from / limits.max_slope + 2.0 * limits.max_slope / limits.max_curvature;
 }
 
 namespace {
@@ -70,7 +70,9 @@ double TimeScale::advance(double period) {
         for (int i = 0; i < 48; ++i) (stops_in_time(0.5 * (a + b)) ? a : b) = 0.5 * (a + b);
         next = a;
     }
-    if (next <= 0.0 && slope > 0.0 && distance - step(next) <= 1e-12) {  // lands on the target
+    // Lands on the target: what is left is below 1e-9 of the rate (the bisection's leftovers would
+    // otherwise halve period after period), and the slope can stop within one period.
+    if (std::abs(slope) <= reach && std::abs(next) <= reach && distance - step(next) <= 1e-9) {
         rate_ = target_;
         slope_ = 0.0;
     } else {

@@ -18,7 +18,7 @@ struct RateLimits {
 // p'' at their planned maxima. Without axis limits: the defaults above.
 RateLimits rate_limits(const PlannerParameters& parameters);
 
-// Time from rate `from` to rest along the S-curve (the bound a hold or abort stops within).
+// The longest a hold or abort takes to bring a rate of at most `from` to rest, rising or not.
 double stop_time(const RateLimits& limits, double from);
 
 class TimeScale {
