@@ -2,7 +2,7 @@
 //
 //   firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]
 //                  [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]
-//                  [--lines N,N,...] [--tsc-hz HZ] [--json FILE]
+//                  [--lines N,N,...] [--stopped] [--hold S] [--tsc-hz HZ] [--json FILE]
 //   firtp-tp-check --tsc-hz       prints the time-stamp counter's frequency (what HAL's .time counts)
 //
 // SAMPLES is what examples/linuxcnc/record.hal records through halsampler, one line a servo period:
@@ -19,7 +19,9 @@
 // program's end; with --tolerance the contour error, with --corner-tolerance the corner errors,
 // with --limits every axis' MAX_VELOCITY and MAX_ACCELERATION, with --jerk the jerk of every axis,
 // with --cycle-time the cycle time (default within 2 ms), with --lines the program lines that
-// motion.program-line (tpGetExecId) showed while the tool moved, in order.
+// motion.program-line (tpGetExecId) showed while the tool moved, in order. --stopped: the program
+// was aborted, so the tool must rest on the path (the last samples equal) short of its end.
+// --hold S: somewhere inside the motion the tool rested at least S seconds (a pause).
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
@@ -66,7 +68,7 @@ struct TpRow {
     std::cerr << "firtp-tp-check: " << why << "\n"
               << "usage: firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]\n"
                  "                      [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]\n"
-                 "                      [--lines N,N,...] [--tsc-hz HZ] [--json FILE]\n"
+                 "                      [--lines N,N,...] [--stopped] [--hold S] [--tsc-hz HZ] [--json FILE]\n"
                  "       firtp-tp-check --tsc-hz\n";
     std::exit(2);
 }
@@ -138,7 +140,8 @@ int main(int argc, char** argv) {
     double tolerance = -1.0, corner_tolerance = -1.0, jerk = -1.0, tsc_hz = 0.0;
     double cycle_time = -1.0, cycle_within = 0.002;
     std::vector<long> expected_lines;
-    bool limits = false;
+    bool limits = false, stopped = false;
+    double hold = -1.0;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string {
@@ -161,6 +164,8 @@ int main(int argc, char** argv) {
         else if (a == "--jerk") jerk = number();
         else if (a == "--tsc-hz") tsc_hz = number();
         else if (a == "--limits") limits = true;
+        else if (a == "--stopped") stopped = true;
+        else if (a == "--hold") hold = number();
         else if (a == "--cycle-time") {
             const std::string v = value();
             char* end = nullptr;
@@ -270,6 +275,14 @@ int main(int argc, char** argv) {
                               {"overruns", tp_overruns}};
     }
 
+    // The longest rest inside the motion (a pause), in seconds.
+    double longest_rest = 0.0;
+    for (std::size_t k = first + 1, run = 0; k <= last; ++k) {
+        run = rows[k].position == rows[k - 1].position ? run + 1 : 0;
+        longest_rest = std::max(longest_rest, static_cast<double>(run) * machine.period);
+    }
+    report["longest_rest_s"] = longest_rest;
+
     // Program lines while moving, each once in the order they came.
     std::vector<long> lines;
     for (std::size_t k = first; k <= last; ++k)
@@ -281,7 +294,11 @@ int main(int argc, char** argv) {
     char text[256];
     if (overruns > 0) fail("the sampler lost samples (" + std::to_string(overruns) + " overruns)");
     if (!m.finite) fail("a sample is not finite");
-    if (end_error > 1e-9) {
+    if (stopped) {
+        const std::size_t n = rows.size();
+        if (n < 20 || rows[n - 1].position != rows[n - 20].position) fail("the tool did not come to rest");
+        if (end_error < 1e-6) fail("the tool reached the program's end: nothing was stopped");
+    } else if (end_error > 1e-9) {
         std::snprintf(text, sizeof text, "the tool ends %.6g mm from the program's end", end_error);
         fail(text);
     }
@@ -310,6 +327,11 @@ int main(int argc, char** argv) {
             fail(text);
         }
     }
+    if (hold > 0.0 && longest_rest < hold) {
+        std::snprintf(text, sizeof text, "the tool rested at most %.3f s inside the motion, expected %.3f s", longest_rest,
+                      hold);
+        fail(text);
+    }
     if (cycle_time > 0.0 && std::abs(m.cycle_time - cycle_time) > cycle_within) {
         std::snprintf(text, sizeof text, "cycle time %.4f s, expected %.4f +- %.4f s", m.cycle_time, cycle_time,
                       cycle_within);
@@ -326,7 +348,8 @@ int main(int argc, char** argv) {
     report["failures"] = failures;
 
     std::printf("samples      %zu (%zu moving), %ld overruns\n", rows.size(), samples.size(), overruns);
-    std::printf("cycle time   %.4f s; %zu program lines while moving\n", m.cycle_time, lines.size());
+    std::printf("cycle time   %.4f s; %zu program lines while moving; longest rest inside %.3f s\n", m.cycle_time,
+                lines.size(), longest_rest);
     std::printf("contour      max error %.4f mm; corners max %.4f mm; end %.3g mm off\n", m.max_contour_error,
                 m.max_corner_error, end_error);
     std::printf("axes         max velocity %.1f, acceleration %.0f, jerk %.0f (units/s^n, 1 ms differences)\n", max_v,

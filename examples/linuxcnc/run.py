@@ -3,7 +3,7 @@
 
     examples/linuxcnc/run.py PROGRAM.ngc [--tp firtp_tp|tpmod] [--tp-params "t1=0.148 t2=0.089"]
         [--module build/linuxcnc/firtp_tp.so] [--check-tool build/bin/firtp-tp-check]
-        [--out DIR] [-- CHECK OPTIONS...]
+        [--out DIR] [--scenario ACTIONS] [-- CHECK OPTIONS...]
 
 It copies this configuration (firtp_tp.ini, machine.hal, record.hal, bin/firtp-headless) into a
 scratch directory, sets [TRAJ]TPMOD, runs `linuxcnc -r` there (as `nobody` when run as root:
@@ -105,10 +105,10 @@ def prepare(work, program, tpmod):
     return ini
 
 
-def run_linuxcnc(work, prefix, timeout):
-    env = dict(os.environ, HOME=work)
+def run_linuxcnc(work, prefix, timeout, scenario=""):
+    env = dict(os.environ, HOME=work, FIRTP_SCENARIO=scenario)
     log = open(os.path.join(work, "linuxcnc.log"), "w")
-    command = prefix + ["env", "HOME=" + work, "linuxcnc", "-r", "firtp_tp.ini"]
+    command = prefix + ["env", "HOME=" + work, "FIRTP_SCENARIO=" + scenario, "linuxcnc", "-r", "firtp_tp.ini"]
     try:
         status = subprocess.run(command, cwd=work, env=env, stdout=log, stderr=subprocess.STDOUT,
                                 timeout=timeout).returncode
@@ -133,7 +133,7 @@ def find_tool(given):
 
 
 def run(program, tp="firtp_tp", tp_params="", module=None, check_tool=None, out=None, check_args=(),
-        timeout=180, quiet=False):
+        timeout=180, quiet=False, scenario=""):
     """Runs one program; returns (status, report dict or None)."""
     if shutil.which("linuxcnc") is None or not os.path.exists(REALTIME):
         raise Skip("LinuxCNC is not installed (linuxcnc-uspace)")
@@ -154,7 +154,7 @@ def run(program, tp="firtp_tp", tp_params="", module=None, check_tool=None, out=
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
         began = time.time()
-        status = run_linuxcnc(work, prefix, timeout)
+        status = run_linuxcnc(work, prefix, timeout, scenario)
         wall = time.time() - began
         result_path = os.path.join(work, "result.json")
         result = json.load(open(result_path)) if os.path.exists(result_path) else {"completed": False,
@@ -207,12 +207,14 @@ def main():
     parser.add_argument("--check-tool", help="firtp-tp-check (default: build/bin or build-tp/bin)")
     parser.add_argument("--out", help="keep the recording, result and report here")
     parser.add_argument("--timeout", type=float, default=180)
+    parser.add_argument("--scenario", default="",
+                        help="operator actions while it runs, e.g. 'feed=0.5@0.1,pause@0.4,resume@1.2' or 'abort@0.5'")
     argv = sys.argv[1:]
     check = argv[argv.index("--") + 1:] if "--" in argv else []
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
     try:
         status, _ = run(os.path.abspath(a.program), a.tp, a.tp_params if a.tp == "firtp_tp" else "", a.module,
-                        a.check_tool, a.out, check, a.timeout)
+                        a.check_tool, a.out, check, a.timeout, scenario=a.scenario)
     except Skip as e:
         print("SKIPPED: %s" % e)
         return SKIP
