@@ -68,7 +68,7 @@ TEST(Machine, DefaultMachine) {
     for (std::size_t a = 3; a < 9; ++a) EXPECT_EQ(m.limits.axis[a].max_velocity, 0.0);
     EXPECT_EQ(m.stages, 2);
     EXPECT_TRUE(m.given_times.empty());
-    EXPECT_TRUE(m.mode_frequencies.empty());
+    EXPECT_TRUE(m.tuning.modes.empty());
     EXPECT_EQ(m.default_tolerance, 0.05);
     EXPECT_EQ(m.tolerance_meaning, firtp::ToleranceMeaning::corner_point);
     EXPECT_EQ(m.arc_chord_tolerance, 0.001);
@@ -103,9 +103,11 @@ TEST(Machine, LoadsSampleIniOverDefaults) {
     EXPECT_EQ(m.given_times[0], 0.0);
     EXPECT_EQ(m.given_times[1], 0.0);
     EXPECT_EQ(m.given_times[2], 0.004);
-    ASSERT_EQ(m.mode_frequencies.size(), 2u);
-    EXPECT_EQ(m.mode_frequencies[0], 40.0);
-    EXPECT_EQ(m.mode_frequencies[1], 55.5);
+    ASSERT_EQ(m.tuning.modes.size(), 2u);
+    EXPECT_EQ(m.tuning.modes[0].frequency_hz, 40.0);
+    EXPECT_EQ(m.tuning.modes[1].frequency_hz, 55.5);
+    EXPECT_EQ(m.tuning.modes[0].damping, firtp::default_mode_damping);
+    EXPECT_EQ(m.tuning.modes[0].axis, -1);
     EXPECT_EQ(m.default_tolerance, 0.02);
     EXPECT_EQ(m.tolerance_meaning, firtp::ToleranceMeaning::contour);
     EXPECT_EQ(m.arc_chord_tolerance, 0.005);
@@ -142,7 +144,7 @@ TEST(Machine, ValueErrorsNameFileLineAndKey) {
 TEST(Machine, FirtpSectionErrors) {
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 2\nT5 = 0.1\n"),
               "mill.ini:3: [FIRTP]T5: unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, "
-              "ARC_CHORD_TOLERANCE, RATE_RESERVE)");
+              "ARC_CHORD_TOLERANCE, RATE_RESERVE, ROBUST)");
     EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 1\n"),
               "mill.ini:2: [FIRTP]RATE_RESERVE: must be below 1 (a share of the acceleration and jerk limits)");
     EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 0\n"), "mill.ini:2: [FIRTP]RATE_RESERVE: '0' must be positive");
@@ -247,3 +249,49 @@ TEST(Machine, FeedOverrideAndRateReserveReachThePlanner) {
     EXPECT_EQ(d.max_rate, 1.0);  // as LinuxCNC: no MAX_FEED_OVERRIDE, no override above 100 %
     EXPECT_EQ(d.rate_reserve, 0.2);
 }
+
+namespace modes_ini {
+
+// [FIRTP]MODES with damping and axes, ROBUST: the paper's diamond modes tuned into the chain.
+TEST(Machine, ModesWithDampingAxesAndRobust) {
+    const MachineConfig m = firtp::load_machine(IniFile::parse(
+        "[AXIS_X]\nMAX_VELOCITY = 300\nMAX_ACCELERATION = 5000\n[AXIS_Y]\nMAX_VELOCITY = 300\n"
+        "MAX_ACCELERATION = 5000\n[FIRTP]\nMODES = X:11.4/0.03, y:6.8/0.02 25\n",
+        "m.ini"));
+    ASSERT_EQ(m.tuning.modes.size(), 3u);
+    EXPECT_EQ(m.tuning.modes[0].axis, 0);
+    EXPECT_EQ(m.tuning.modes[0].frequency_hz, 11.4);
+    EXPECT_EQ(m.tuning.modes[0].damping, 0.03);
+    EXPECT_EQ(m.tuning.modes[1].axis, 1);
+    EXPECT_EQ(m.tuning.modes[2].axis, -1);
+    EXPECT_EQ(m.tuning.modes[2].damping, firtp::default_mode_damping);
+    EXPECT_EQ(m.tuning.robust, firtp::RobustTuning::none);
+    const firtp::TunedFilters tuned = m.tuned_filters();
+    ASSERT_EQ(tuned.filters.stages, 3);  // three modes, three stages
+    EXPECT_EQ(m.filter_times().stages, 3);
+
+    MachineConfig robust = firtp::load_machine(IniFile::parse(
+        "[AXIS_X]\nMAX_JERK = 100000\n[FIRTP]\nMODES = 6.8/0.02 11.4/0.03\nROBUST = straddle 0.15\n", "m.ini"));
+    EXPECT_EQ(robust.tuning.robust, firtp::RobustTuning::straddle);
+    EXPECT_EQ(robust.tuning.spread, 0.15);
+    EXPECT_EQ(robust.filter_times().stages, 4);
+    firtp::parse_robust("double", robust.tuning);
+    EXPECT_EQ(robust.tuning.robust, firtp::RobustTuning::double_stage);
+    EXPECT_EQ(robust.tuning.spread, 0.0);
+    firtp::parse_robust("Straddle:0.2", robust.tuning);
+    EXPECT_EQ(robust.tuning.spread, 0.2);
+}
+
+TEST(Machine, ModeErrorsNameFileLineAndKey) {
+    EXPECT_EQ(load_error("[FIRTP]\nMODES = 6.8/2\n"), "mill.ini:2: [FIRTP]MODES: '6.8/2': the damping must lie in [0, 1)");
+    EXPECT_EQ(load_error("[FIRTP]\nMODES = 6.8/x\n"), "mill.ini:2: [FIRTP]MODES: '6.8/x': the damping is not a number");
+    EXPECT_EQ(load_error("[FIRTP]\nMODES = A:6.8\n"), "mill.ini:2: [FIRTP]MODES: 'A:6.8': 'A' is not an axis of this machine");
+    EXPECT_EQ(load_error("[FIRTP]\nROBUST = triple\n"),
+              "mill.ini:2: [FIRTP]ROBUST: 'triple' must be none, double, straddle or straddle SPREAD (0 < SPREAD < 0.5)");
+    EXPECT_EQ(load_error("[FIRTP]\nROBUST = straddle 0.7\n"),
+              "mill.ini:2: [FIRTP]ROBUST: 'straddle 0.7' must be none, double, straddle or straddle SPREAD (0 < SPREAD < 0.5)");
+    MachineConfig too_many = firtp::load_machine(IniFile::parse("[FIRTP]\nMODES = 5 6 7\nROBUST = double\n", "m.ini"));
+    EXPECT_THROW(too_many.filter_times(), ConfigError);
+}
+
+}  // namespace modes_ini

@@ -1,5 +1,7 @@
 #include <firtp/parameters.hpp>
 
+#include <firtp/mode_tuning.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -37,28 +39,32 @@ double worst_ratio(const MachineLimits& limits, double AxisLimits::*num, double 
 
 }  // namespace
 
+std::array<double, max_stages> limit_filter_times(const MachineLimits& limits, std::span<const double> given) {
+    std::array<double, max_stages> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = i < given.size() ? given[i] : 0.0;
+    if (t[0] <= 0.0) t[0] = worst_ratio(limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
+    if (t[1] <= 0.0) t[1] = worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
+    return t;
+}
+
 FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
                                      std::span<const double> given,
                                      std::span<const double> mode_frequencies_hz) {
     if (stages < 1 || stages > max_stages) throw std::invalid_argument("the chain needs 1 to 4 stages");
+    if (!mode_frequencies_hz.empty()) {
+        ModeTuning tuning;
+        for (double hz : mode_frequencies_hz) tuning.modes.push_back({hz, default_mode_damping, -1});
+        return tune_filter_times(limits, stages, given, tuning).filters;
+    }
+    const std::array<double, max_stages> times = limit_filter_times(limits, given);
     FilterTimes f;
     f.stages = stages;
     for (int i = 0; i < stages; ++i) {
-        double t = i < static_cast<int>(given.size()) ? given[i] : 0.0;
-        if (t <= 0.0 && i == 0) t = worst_ratio(limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
-        if (t <= 0.0 && i == 1) t = worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
-        if (i < static_cast<int>(mode_frequencies_hz.size())) {
-            const double f_mode = mode_frequencies_hz[i];
-            if (!(f_mode > 0.0) || !std::isfinite(f_mode))
-                throw std::invalid_argument("mode frequencies must be positive");
-            // Eq. 10: T_i = k / f, the smallest k >= 1 that keeps T_i at least what the limits ask.
-            const double k = std::max(1.0, std::ceil(t * f_mode - 1e-9));
-            t = k / f_mode;
-        }
+        const double t = times[static_cast<std::size_t>(i)];
         if (!(t > 0.0) || !std::isfinite(t))
             throw std::invalid_argument("T" + std::to_string(i + 1) +
                                         " is neither given nor derivable from the axis limits or a mode");
-        f.T[i] = t;
+        f.T[static_cast<std::size_t>(i)] = t;
     }
     std::sort(f.T.begin(), f.T.begin() + stages, std::greater<>());
     return f;

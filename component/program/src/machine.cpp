@@ -49,29 +49,15 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
     }
 }
 
-std::vector<double> read_modes(const IniFile& ini, const IniFile::Entry& e) {
-    std::vector<double> modes;
-    std::istringstream words(e.value);
-    for (std::string word; words >> word;) {
-        double hz = 0.0;
-        const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), hz);
-        if (ec != std::errc{} || ptr != word.data() + word.size() || !std::isfinite(hz))
-            fail(ini, e, cat("'", word, "' is not a number"));
-        if (hz <= 0.0) fail(ini, e, cat("'", word, "' must be a positive frequency in Hz"));
-        modes.push_back(hz);
-    }
-    return modes;
-}
-
 void read_firtp(const IniFile& ini, MachineConfig& m) {
     static constexpr std::string_view known[] = {"STAGES",    "T1", "T2", "T3", "T4", "MODES",
                                                  "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE",
-                                                 "RATE_RESERVE"};
+                                                 "RATE_RESERVE", "ROBUST"};
     for (const IniFile::Entry* e : ini.section("FIRTP"))
         if (std::find(std::begin(known), std::end(known), e->key) == std::end(known))
             fail(ini, *e,
                  "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, ARC_CHORD_TOLERANCE, "
-                 "RATE_RESERVE)");
+                 "RATE_RESERVE, ROBUST)");
     if (const auto r = positive(ini, "FIRTP", "RATE_RESERVE")) {
         if (*r >= 1.0) fail(ini, *ini.find("FIRTP", "RATE_RESERVE"), "must be below 1 (a share of the acceleration and jerk limits)");
         m.rate_reserve = *r;
@@ -92,7 +78,16 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
         if (m.given_times.size() <= i) m.given_times.resize(i + 1, 0.0);
         m.given_times[i] = *t;
     }
-    if (const IniFile::Entry* e = ini.find("FIRTP", "MODES")) m.mode_frequencies = read_modes(ini, *e);
+    try {
+        if (const IniFile::Entry* e = ini.find("FIRTP", "MODES")) m.tuning.modes = parse_modes(e->value, m.limits.axes);
+    } catch (const ConfigError& error) {
+        fail(ini, *ini.find("FIRTP", "MODES"), error.what());
+    }
+    try {
+        if (const IniFile::Entry* e = ini.find("FIRTP", "ROBUST")) parse_robust(e->value, m.tuning);
+    } catch (const ConfigError& error) {
+        fail(ini, *ini.find("FIRTP", "ROBUST"), error.what());
+    }
     if (const auto tol = positive(ini, "FIRTP", "TOLERANCE")) m.default_tolerance = *tol;
     if (const auto chord = positive(ini, "FIRTP", "ARC_CHORD_TOLERANCE")) m.arc_chord_tolerance = *chord;
     if (const IniFile::Entry* e = ini.find("FIRTP", "TOLERANCE_MEANING")) {
@@ -112,8 +107,24 @@ void check_override(const std::optional<double>& value, const char* flag, const 
 }  // namespace
 
 FilterTimes MachineConfig::filter_times() const {
+    if (!tuning.modes.empty()) return tuned_filters().filters;
     try {
-        return filter_times_from_limits(limits, stages, given_times, mode_frequencies);
+        return filter_times_from_limits(limits, stages, given_times, {});
+    } catch (const std::invalid_argument& e) {
+        throw ConfigError(cat("filter times: ", e.what()));
+    }
+}
+
+TunedFilters MachineConfig::tuned_filters() const {
+    try {
+        if (tuning.modes.empty()) {
+            TunedFilters untuned;
+            untuned.filters = filter_times_from_limits(limits, stages, given_times, {});
+            for (int i = 0; i < untuned.filters.stages; ++i)
+                untuned.stages[static_cast<std::size_t>(i)].time = untuned.filters.T[static_cast<std::size_t>(i)];
+            return untuned;
+        }
+        return tune_filter_times(limits, stages, given_times, tuning);
     } catch (const std::invalid_argument& e) {
         throw ConfigError(cat("filter times: ", e.what()));
     }
@@ -167,6 +178,85 @@ void apply_overrides(MachineConfig& machine, const MachineOverrides& o) {
     }
     if (o.tolerance) machine.default_tolerance = *o.tolerance;
     if (o.period) machine.period = *o.period;
+}
+
+namespace {
+
+// A number that fills the whole word, or nullopt.
+std::optional<double> whole_number(std::string_view word) {
+    double value = 0.0;
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (ec != std::errc{} || ptr != word.data() + word.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::vector<std::string> words_of(std::string_view text) {
+    std::string spaced(text);
+    std::replace(spaced.begin(), spaced.end(), ',', ' ');
+    std::istringstream in(spaced);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;) words.push_back(w);
+    return words;
+}
+
+StructuralMode parse_mode(const std::string& word, int axes) {
+    StructuralMode mode;
+    std::string_view rest = word;
+    if (const std::size_t colon = rest.find(':'); colon != std::string_view::npos) {
+        const std::string_view letter = rest.substr(0, colon);
+        const auto* found = letter.size() == 1
+                                ? std::find(axis_letters.begin(), axis_letters.end(),
+                                            static_cast<char>(std::toupper(static_cast<unsigned char>(letter[0]))))
+                                : axis_letters.end();
+        if (found == axis_letters.end() || found - axis_letters.begin() >= axes)
+            throw ConfigError(cat("'", word, "': '", std::string(letter), "' is not an axis of this machine"));
+        mode.axis = static_cast<int>(found - axis_letters.begin());
+        rest = rest.substr(colon + 1);
+    }
+    const std::size_t slash = rest.find('/');
+    const auto hz = whole_number(rest.substr(0, slash));
+    if (!hz) throw ConfigError(cat("'", word, "' is not a number"));
+    if (*hz <= 0.0) throw ConfigError(cat("'", word, "' must be a positive frequency in Hz"));
+    mode.frequency_hz = *hz;
+    if (slash != std::string_view::npos) {
+        const auto zeta = whole_number(rest.substr(slash + 1));
+        if (!zeta) throw ConfigError(cat("'", word, "': the damping is not a number"));
+        if (*zeta < 0.0 || *zeta >= 1.0) throw ConfigError(cat("'", word, "': the damping must lie in [0, 1)"));
+        mode.damping = *zeta;
+    }
+    return mode;
+}
+
+}  // namespace
+
+std::vector<StructuralMode> parse_modes(std::string_view text, int axes) {
+    std::vector<StructuralMode> modes;
+    for (const std::string& word : words_of(text)) modes.push_back(parse_mode(word, axes));
+    return modes;
+}
+
+void parse_robust(std::string_view text, ModeTuning& tuning) {
+    std::string spaced(text);
+    std::replace(spaced.begin(), spaced.end(), ':', ' ');
+    const std::vector<std::string> words = words_of(spaced);
+    std::string name = words.empty() ? "" : words[0];
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const auto usage = [&] {
+        return ConfigError(cat("'", std::string(text), "' must be none, double, straddle or straddle SPREAD (0 < SPREAD < 0.5)"));
+    };
+    tuning.spread = 0.0;
+    if (name == "none" && words.size() == 1) tuning.robust = RobustTuning::none;
+    else if (name == "double" && words.size() == 1) tuning.robust = RobustTuning::double_stage;
+    else if (name == "straddle" && words.size() <= 2) {
+        tuning.robust = RobustTuning::straddle;
+        if (words.size() == 2) {
+            const auto spread = whole_number(words[1]);
+            if (!spread || *spread <= 0.0 || *spread >= 0.5) throw usage();
+            tuning.spread = *spread;
+        }
+    } else {
+        throw usage();
+    }
 }
 
 }  // namespace firtp

@@ -55,13 +55,18 @@ MachineLimits planned_limits(const PlannerParameters& parameters);
 // Checks max_rate >= 1 and 0 < rate_reserve < 1, finite; returns an empty string or the reason.
 const char* validate_rate(const PlannerParameters& parameters);
 
-// T1 from velocity/acceleration, T2 from acceleration/jerk (Eq. 4: a = v / T1, j = a / T2),
-// then stage i raised to the next multiple k / f_i of the i-th structural mode (Eq. 10).
-// Explicit times (> 0 in `given`) win over derived ones. Throws std::invalid_argument when a
-// stage can be neither given nor derived.
+// T1 from velocity/acceleration, T2 from acceleration/jerk (Eq. 4: a = v / T1, j = a / T2).
+// Explicit times (> 0 in `given`) win over derived ones. With mode frequencies, the times are
+// tuned to them (Eq. 10, T = k / f) at the smallest delay, the times above as lower bounds
+// (tune_filter_times in mode_tuning.hpp, damping default_mode_damping). Throws
+// std::invalid_argument when a stage can be neither given nor derived.
 FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
                                      std::span<const double> given,
                                      std::span<const double> mode_frequencies_hz);
+
+// The times above by position, untuned: given T_i, else T1 = max v/a and T2 = max a/j over the
+// axes; 0 where neither.
+std::array<double, max_stages> limit_filter_times(const MachineLimits& limits, std::span<const double> given);
 
 // Checks T1 >= ... >= Tn > 0, 1 <= n <= 4, finite; returns an empty string or the reason.
 const char* validate(const FilterTimes& filters);

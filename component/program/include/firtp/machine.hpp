@@ -2,9 +2,11 @@
 #pragma once
 
 #include <firtp/ini.hpp>
+#include <firtp/mode_tuning.hpp>
 #include <firtp/parameters.hpp>
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace firtp {
@@ -14,14 +16,17 @@ struct MachineConfig {
     MachineLimits limits;                   // [TRAJ]MAX_LINEAR_VELOCITY, [AXIS_<L>]MAX_VELOCITY/ACCELERATION/JERK
     int stages = 2;                         // [FIRTP]STAGES
     std::vector<double> given_times;        // [FIRTP]T1..T4 in s (0 = derive from limits)
-    std::vector<double> mode_frequencies;   // [FIRTP]MODES, Hz, space separated
+    ModeTuning tuning;                      // [FIRTP]MODES (Hz[/damping], X: for one axis) and ROBUST
     double default_tolerance = 0.05;        // [FIRTP]TOLERANCE, used by G64 without P
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // [FIRTP]TOLERANCE_MEANING corner|contour
     double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
     double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
     double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: share of a and j limits kept for override ramps
 
-    FilterTimes filter_times() const;       // filter_times_from_limits(limits, stages, given_times, mode_frequencies)
+    // Untuned without modes: given times, else T1 = max v/a, T2 = max a/j (filter_times_from_limits).
+    // With modes: tuned to them at the smallest delay, those times as lower bounds (tune_filter_times).
+    FilterTimes filter_times() const;
+    TunedFilters tuned_filters() const;     // the same, with the mode each stage serves
     PlannerParameters planner_parameters() const;
 };
 
@@ -39,5 +44,15 @@ struct MachineOverrides {
     std::optional<double> t1, t2, tolerance, period;
 };
 void apply_overrides(MachineConfig& machine, const MachineOverrides& overrides);
+
+// Structural modes as [FIRTP]MODES and `firtp simulate --modes` write them: words separated by
+// blanks or commas, each `HZ`, `HZ/DAMPING` or `L:HZ[/DAMPING]` with L an axis letter (the mode
+// moves that axis only; without it, every axis). Damping defaults to default_mode_damping.
+// `axes` is the machine's axis count. Throws ConfigError with the reason (no file name).
+std::vector<StructuralMode> parse_modes(std::string_view text, int axes);
+
+// [FIRTP]ROBUST / --robust: `none`, `double`, `straddle` or `straddle SPREAD` (also `straddle:SPREAD`,
+// 0 < SPREAD < 0.5). Sets tuning.robust and tuning.spread; throws ConfigError with the reason.
+void parse_robust(std::string_view text, ModeTuning& tuning);
 
 }  // namespace firtp
