@@ -213,6 +213,7 @@ struct TpCore::Impl {
         p.tolerance_meaning = s.contour_tolerance ? ToleranceMeaning::contour : ToleranceMeaning::corner_point;
         p.queue_capacity = s.blocks;
         p.max_rate = max_rate;
+        p.rate_reserve = s.rate_reserve;
         p.limits.axes = pose_axes;
         for (std::size_t a = 0; a < vel_limits.size(); ++a) {
             AxisLimits& l = p.limits.axis[a];
@@ -429,6 +430,8 @@ TpCore::TpCore(const TpSettings& settings) {
     if (!(settings.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
     if (!(settings.chord_tolerance > 0.0)) throw std::invalid_argument("the chord tolerance must be positive");
     if (settings.max_blocks_per_cycle < 1) throw std::invalid_argument("at least one block a period must be planned");
+    if (!(settings.rate_reserve > 0.0 && settings.rate_reserve < 1.0))
+        throw std::invalid_argument("the rate reserve must lie between 0 and 1");
     impl_ = std::make_unique<Impl>(settings);
 }
 

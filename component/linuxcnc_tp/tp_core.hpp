@@ -53,6 +53,7 @@ struct TpSettings {
     double default_tolerance = 0.05;   // units: G64 without P, and inside arcs in G61/G61.1
     bool contour_tolerance = false;    // false: the tolerance bounds the corner point (firtp's default)
     double chord_tolerance = 0.001;    // units: largest sagitta of an arc's chords
+    double rate_reserve = 0.2;         // share of acceleration and jerk kept for override/hold ramps (0..1)
     std::size_t moves = 1024;          // moves accepted and not finished, at most
     std::size_t full_margin = 16;      // full() this many moves before the ring is
     std::size_t blocks = 4096;         // planned blocks not yet retired (interpolator), at most

@@ -3,7 +3,7 @@
 // motmod then binds its tp* references to these definitions (rtapi_app opens modules RTLD_GLOBAL).
 //
 //   loadrt firtp_tp [t1=S] [t2=S] [t3=S t4=S stages=N] [jerk=J] [tolerance=T] [chord_tol=C]
-//                   [meaning=corner|contour] [queue=MOVES] [blocks=BLOCKS] [max_blocks=N]
+//                   [meaning=corner|contour] [rate_reserve=R] [queue=MOVES] [blocks=BLOCKS] [max_blocks=N]
 //                   [plan_budget_us=US] [arena_mb=MB]
 //
 // Every tp* call maps onto firtp::linuxcnc_tp::TpCore (tp_core.hpp says how); this file only
@@ -60,6 +60,8 @@ static char* tolerance = nullptr;
 RTAPI_MP_STRING(tolerance, "tolerance for G64 without P (and inside arcs in G61), machine units (0.05)");
 static char* chord_tol = nullptr;
 RTAPI_MP_STRING(chord_tol, "largest sagitta of an arc's chords, machine units (0.001)");
+static char* rate_reserve = nullptr;
+RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk kept for feed override, hold and abort ramps (0.2)");
 static char* meaning = nullptr;
 RTAPI_MP_STRING(meaning, "what a tolerance bounds: corner (closest approach to the corner point, default) or contour");
 static int queue = 1024;
@@ -474,6 +476,7 @@ extern "C" int rtapi_app_main(void) {
     s.jerk = number(jerk, 100000.0);
     s.default_tolerance = number(tolerance, 0.05);
     s.chord_tolerance = number(chord_tol, 0.001);
+    s.rate_reserve = number(rate_reserve, 0.2);
     if (meaning != nullptr && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
         return fail("meaning must be corner or contour");
     s.contour_tolerance = meaning != nullptr && std::strcmp(meaning, "contour") == 0;
