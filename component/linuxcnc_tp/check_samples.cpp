@@ -2,7 +2,8 @@
 //
 //   firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]
 //                  [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]
-//                  [--lines N,N,...] [--stopped] [--hold S] [--tsc-hz HZ] [--json FILE]
+//                  [--lines N,N,...] [--stopped] [--hold S] [--reference CSV [--within MM]]
+//                  [--tsc-hz HZ] [--json FILE]
 //   firtp-tp-check --tsc-hz       prints the time-stamp counter's frequency (what HAL's .time counts)
 //
 // SAMPLES is what examples/linuxcnc/record.hal records through halsampler, one line a servo period:
@@ -22,6 +23,8 @@
 // motion.program-line (tpGetExecId) showed while the tool moved, in order. --stopped: the program
 // was aborted, so the tool must rest on the path (the last samples equal) short of its end.
 // --hold S: somewhere inside the motion the tool rested at least S seconds (a pause).
+// --reference CSV: `firtp plan --csv` of the same program and machine; every period of the
+// motion must equal it within --within (1e-9 mm), and both must last as long.
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
@@ -68,7 +71,8 @@ struct TpRow {
     std::cerr << "firtp-tp-check: " << why << "\n"
               << "usage: firtp-tp-check SAMPLES --ini INI --program NGC [--tp-samples FILE] [--tolerance MM]\n"
                  "                      [--corner-tolerance MM] [--limits] [--jerk J] [--cycle-time S[:WITHIN]]\n"
-                 "                      [--lines N,N,...] [--stopped] [--hold S] [--tsc-hz HZ] [--json FILE]\n"
+                 "                      [--lines N,N,...] [--stopped] [--hold S] [--reference CSV [--within MM]]\n"
+                 "                      [--tsc-hz HZ] [--json FILE]\n"
                  "       firtp-tp-check --tsc-hz\n";
     std::exit(2);
 }
@@ -136,7 +140,8 @@ int main(int argc, char** argv) {
         std::printf("%.0f\n", measure_tsc_hz());
         return 0;
     }
-    std::string samples_path, ini_path, program_path, tp_samples_path, json_path;
+    std::string samples_path, ini_path, program_path, tp_samples_path, json_path, reference_path;
+    double within = 1e-9;
     double tolerance = -1.0, corner_tolerance = -1.0, jerk = -1.0, tsc_hz = 0.0;
     double cycle_time = -1.0, cycle_within = 0.002;
     std::vector<long> expected_lines;
@@ -166,6 +171,8 @@ int main(int argc, char** argv) {
         else if (a == "--limits") limits = true;
         else if (a == "--stopped") stopped = true;
         else if (a == "--hold") hold = number();
+        else if (a == "--reference") reference_path = value();
+        else if (a == "--within") within = number();
         else if (a == "--cycle-time") {
             const std::string v = value();
             char* end = nullptr;
@@ -324,6 +331,38 @@ int main(int argc, char** argv) {
         }
         if (jerk > 0.0 && m.max_jerk[a] > jerk * (1 + 1e-6)) {
             std::snprintf(text, sizeof text, "%c jerk %.0f > %.0f", axis, m.max_jerk[a], jerk);
+            fail(text);
+        }
+    }
+    if (!reference_path.empty()) {
+        // firtp plan's CSV: t,x,y,z,... one row a period from rest at the start to rest at the end.
+        std::ifstream in(reference_path);
+        if (!in) usage("cannot read " + reference_path);
+        std::vector<firtp::AxisVector> plan;
+        std::string row;
+        std::getline(in, row);  // header
+        while (std::getline(in, row)) {
+            std::istringstream fields(row);
+            std::string field;
+            firtp::AxisVector p = firtp::AxisVector::Zero();
+            std::getline(fields, field, ',');  // t
+            for (int a = 0; a < 3 && std::getline(fields, field, ','); ++a) p[a] = std::strtod(field.c_str(), nullptr);
+            plan.push_back(p);
+        }
+        double largest = 0.0;
+        const std::size_t n = std::min(plan.size(), samples.size());
+        for (std::size_t k = 0; k < n; ++k) largest = std::max(largest, (samples[k].position - plan[k]).norm());
+        report["reference_periods"] = plan.size();
+        report["largest_difference_from_reference_mm"] = largest;
+        std::printf("reference    %zu periods planned offline, %zu recorded; largest difference %.3g mm\n", plan.size(),
+                    samples.size(), largest);
+        if (plan.size() != samples.size()) {
+            std::snprintf(text, sizeof text, "%zu periods recorded, %zu in %s", samples.size(), plan.size(),
+                          reference_path.c_str());
+            fail(text);
+        }
+        if (!(largest <= within)) {
+            std::snprintf(text, sizeof text, "differs from the offline plan by %.3g mm (allowed %.3g)", largest, within);
             fail(text);
         }
     }
