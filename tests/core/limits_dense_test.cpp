@@ -1,5 +1,6 @@
 // Axis limits at every sample, overlaps included; dense paths (many blocks in one filter window)
 // within tolerance without the feed collapsing. Measured on the output.
+#include "support/limits.hpp"
 #include "support/reference.hpp"
 
 #include <firtp/measure.hpp>
@@ -26,25 +27,6 @@ Block line_to(const AxisVector& target, double feed, double tolerance, std::int6
     return b;
 }
 
-MachineLimits limits(double v, double a, double j) {
-    MachineLimits l;
-    l.axes = 3;
-    for (int i = 0; i < 3; ++i) l.axis[i] = {v, a, j};
-    return l;
-}
-
-// Largest |value| / limit over every sample and axis (analytic samples).
-double worst_ratio(const std::vector<AxisState>& samples, const MachineLimits& l) {
-    double worst = 0.0;
-    for (const AxisState& s : samples)
-        for (int a = 0; a < l.axes; ++a) {
-            worst = std::max(worst, std::abs(s.velocity[a]) / l.axis[a].max_velocity);
-            worst = std::max(worst, std::abs(s.acceleration[a]) / l.axis[a].max_acceleration);
-            worst = std::max(worst, std::abs(s.jerk[a]) / l.axis[a].max_jerk);
-        }
-    return worst;
-}
-
 }  // namespace
 
 TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters) {
@@ -55,7 +37,7 @@ TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters)
         PlannerParameters p;
         p.period = 0.001;
         // Limits and filters drawn independently: often the filters are too short for the limits.
-        p.limits = limits(100 + 300 * unit(rng), 500 + 9500 * unit(rng), 1e4 + 4e5 * unit(rng));
+        p.limits = test::uniform_limits(100 + 300 * unit(rng), 500 + 9500 * unit(rng), 1e4 + 4e5 * unit(rng));
         p.filters = test::chain_of({0.01 + 0.1 * unit(rng), 0.005 + 0.04 * unit(rng)});
         if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
         std::vector<Block> blocks;
@@ -71,7 +53,7 @@ TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters)
         for (const Block& b : blocks) points.push_back(b.target);
         const Measured m = measure(t.samples, points, p.period);
         SCOPED_TRACE("program " + std::to_string(k));
-        ASSERT_LE(worst_ratio(t.samples, p.limits), 1.0 + 1e-6);  // what the planner guarantees
+        ASSERT_LE(test::worst_ratio(t.samples, p.limits), 1.0 + 1e-6);  // what the planner guarantees
         for (int a = 0; a < 3; ++a) {  // finite differences of the positions, as a drive sees them
             ASSERT_LE(m.max_velocity[a], p.limits.axis[a].max_velocity * (1 + 1e-6));
             ASSERT_LE(m.max_acceleration[a], p.limits.axis[a].max_acceleration * (1 + 1e-6));
@@ -89,7 +71,7 @@ TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters)
 TEST(AxisLimits, ReversalWithFullOverlapWouldDoubleTheAccelerationAndIsHeldToTheLimit) {
     PlannerParameters p;
     p.filters = test::chain_of({0.06, 0.02});
-    p.limits = limits(300, 5000, 5e5);  // T1 = v / a: one block alone reaches a = F / T1 = 5000 at 300 mm/s
+    p.limits = test::uniform_limits(300, 5000, 5e5);  // T1 = v / a: one block alone reaches a = F / T1 = 5000 at 300 mm/s
     const std::vector<Block> blocks{line_to(xyz(40, 0), 300, 5.0, 1), line_to(xyz(0, 0), 300, 5.0, 2)};
     const Trajectory limited = plan_trajectory(p, AxisVector::Zero(), blocks);
     p.limits = MachineLimits{};
@@ -153,7 +135,7 @@ TEST(DensePaths, RetractAndPlungeBeforeCornersDoNotHideThem) {
     for (bool limited : {false, true}) {
         PlannerParameters p;
         p.filters = test::chain_of({0.06, 0.05});
-        if (limited) p.limits = limits(300, 5000, 1e5);
+        if (limited) p.limits = test::uniform_limits(300, 5000, 1e5);
         const double tolerance = 0.02;
         const std::vector<Block> blocks{line_to(xyz(0, 0, 1), 300, tolerance, 3), line_to(xyz(0, 0, 0), 5, tolerance, 4),
                                         line_to(xyz(20, 0, 0), 40, tolerance, 5), line_to(xyz(20, 20, 0), 40, tolerance, 6),

@@ -4,6 +4,7 @@
 // sees; between the planned instants the FIR output's jerk steps may add up for less than a period,
 // which only shifted samples can show); the path, and so the tolerance, does
 // not depend on the rate; holds stop within stop_time(); the end is exact. Seeded.
+#include "support/limits.hpp"
 #include "support/reference.hpp"
 #include "support/separation.hpp"
 
@@ -24,13 +25,6 @@ using namespace firtp;
 using firtp::test::xyz;
 
 namespace {
-
-MachineLimits limits(double v, double a, double j) {
-    MachineLimits l;
-    l.axes = 3;
-    for (int i = 0; i < 3; ++i) l.axis[i] = {v, a, j};
-    return l;
-}
 
 struct Outcome {
     std::vector<AxisState> samples;
@@ -81,21 +75,11 @@ Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const 
     return r;
 }
 
-double worst_ratio(const std::vector<AxisState>& samples, const MachineLimits& l) {
-    double worst = 0.0;
-    for (const AxisState& s : samples)
-        for (int a = 0; a < l.axes; ++a) {
-            worst = std::max(worst, std::abs(s.velocity[a]) / l.axis[a].max_velocity);
-            worst = std::max(worst, std::abs(s.acceleration[a]) / l.axis[a].max_acceleration);
-        }
-    return worst;
-}
-
 }  // namespace
 
 TEST(RateLimits, FromTheAxisLimitsAndTheReserve) {
     PlannerParameters p;
-    p.limits = limits(300, 5000, 1e5);
+    p.limits = test::uniform_limits(300, 5000, 1e5);
     const RateLimits r = rate_limits(p);
     // r' <= min(0.2 * 5000 / 300, 0.2 * 1e5 / (6 * 4000)); r'' = (0.2 * 1e5 - 3 r' 4000) / 300
     EXPECT_NEAR(r.max_slope, 0.2e5 / 24000, 1e-12);
@@ -125,7 +109,7 @@ TEST(RateLimits, OverrideHoldAndAbortAtRandomMomentsKeepLimitsToleranceAndEnd) {
     int holds = 0, aborts = 0;
     for (int k = 0; k < programs; ++k) {
         PlannerParameters p;
-        p.limits = limits(100 + 300 * unit(rng), 1000 + 9000 * unit(rng), 2e4 + 3e5 * unit(rng));
+        p.limits = test::uniform_limits(100 + 300 * unit(rng), 1000 + 9000 * unit(rng), 2e4 + 3e5 * unit(rng));
         p.filters = test::chain_of({0.02 + 0.08 * unit(rng), 0.01 + 0.03 * unit(rng)});
         if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
         p.max_rate = k % 2 == 0 ? 1.0 : 1.0 + unit(rng);
@@ -162,7 +146,7 @@ TEST(RateLimits, OverrideHoldAndAbortAtRandomMomentsKeepLimitsToleranceAndEnd) {
         events.emplace_back(tick + 1 + static_cast<int>(unit(rng) * 500), k % 4 == 3 ? -1.0 : 1.0);
         const Outcome r = run(p, blocks, events);
         SCOPED_TRACE("program " + std::to_string(k));
-        const double ratio = worst_ratio(r.samples, p.limits);
+        const double ratio = test::worst_ratio(r.samples, p.limits, false);
         worst = std::max(worst, ratio);
         ASSERT_LE(ratio, 1.0 + 1e-6);
         const Measured m = measure(r.samples, r.points, p.period), m0 = measure(reference.samples, reference.points, p.period);
