@@ -23,8 +23,8 @@ std::filesystem::path find_gnuplot() {
         if (::access(candidate.c_str(), X_OK) == 0) return candidate;
         dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
     }
-    throw std::runtime_error("--plot needs gnuplot, which is not on PATH: install the Debian package gnuplot-nox "
-                             "(apt-get install gnuplot-nox)");
+    throw std::runtime_error("the plots (--plot, --report, simulate --out) need gnuplot, which is not on PATH: "
+                             "install the Debian package gnuplot-nox (apt-get install gnuplot-nox)");
 }
 
 void run_gnuplot(const std::filesystem::path& gnuplot, const std::string& script) {

@@ -3,6 +3,7 @@
 #include "cli_errors.hpp"
 #include "plan_command.hpp"
 #include "run_command.hpp"
+#include "simulate_command.hpp"
 
 #include <exception>
 #include <span>
@@ -21,7 +22,9 @@ constexpr const char* usage =
     "  run PROGRAM.ngc    the whole chain in this process: host stub -> LCM -> bridge -> HAL\n"
     "                     component on a hal-shim servo thread -> axis states over LCM; same outputs\n"
     "  serve              the HAL component and its LCM bridge on a real-time servo thread\n"
-    "  host PROGRAM.ngc   stream a program over LCM to `firtp serve`, with progress and keys\n\n"
+    "  host PROGRAM.ngc   stream a program over LCM to `firtp serve`, with progress and keys\n"
+    "  simulate PROGRAM.ngc  firtp tuned to the structural modes, untuned, and an S-curve planner\n"
+    "                     driving the modes: residual vibration table, --out DIR for plots\n\n"
     "Options:\n"
     "  -h, --help         show this help and exit\n\n"
     "Run 'firtp COMMAND --help' for a command's options (plan: --ini, --t1, --t2, --tolerance,\n"
@@ -40,6 +43,7 @@ int dispatch(const std::vector<std::string>& args) {
     if (args[0] == "run") return firtp::cli::run_command(std::span(args).subspan(1));
     if (args[0] == "serve") return firtp::cli::serve_command(std::span(args).subspan(1));
     if (args[0] == "host") return firtp::cli::host_command(std::span(args).subspan(1));
+    if (args[0] == "simulate") return firtp::cli::simulate_command(std::span(args).subspan(1));
     throw firtp::cli::UsageError("unknown command '" + args[0] + "' (see firtp --help)");
 }
 

@@ -4,6 +4,7 @@
 #include "plan_options.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
+#include "report.hpp"
 #include "summary.hpp"
 
 #include <iostream>
@@ -19,9 +20,11 @@ int plan_command(std::span<const std::string> args) {
     }
     // Before the planning work: a missing gnuplot fails at once.
     const std::optional<std::filesystem::path> gnuplot =
-        options.plot ? std::optional(find_gnuplot()) : std::nullopt;
+        options.plot || options.report ? std::optional(find_gnuplot()) : std::nullopt;
     const PlanRun run = run_plan(options);
-    const std::vector<std::filesystem::path> written = write_outputs(run, options, gnuplot);
+    std::vector<std::filesystem::path> written = write_outputs(run, options, gnuplot);
+    if (options.report)
+        for (const auto& file : write_report(run, options, *gnuplot)) written.push_back(file);
     print_summary(std::cout, run, options.program.filename().string(), written);
     return 0;
 }

@@ -17,7 +17,8 @@ namespace po = boost::program_options;
 // the validation that names the flag instead of being read as an unknown option "-3".
 constexpr const char* valued_flags[] = {"--ini", "--t1", "--t2", "--tolerance", "--period", "--tolerance-meaning",
                                         "--csv", "--json", "--plot", "--lcm-url", "--module", "--max-feed",
-                                        "--duration", "--lcm-log"};
+                                        "--duration", "--lcm-log", "--modes", "--robust", "--report", "--out",
+                                        "--detune"};
 
 }  // namespace
 
@@ -54,12 +55,30 @@ po::options_description output_flags() {
     return d;
 }
 
+po::options_description mode_flags() {
+    po::options_description d("Structural modes", 100, 50);
+    d.add_options()
+        ("modes", po::value<std::string>()->value_name("LIST"),
+         "structural modes the filters are tuned to (T = k / f at the smallest delay), overriding [FIRTP]MODES: "
+         "words HZ, HZ/DAMPING or L:HZ/DAMPING (L an axis letter: the mode moves that axis only), e.g. "
+         "'X:11.4/0.03 Y:6.8/0.02'; damping 0.02 when not given")
+        ("robust", po::value<std::string>()->value_name("NAME"),
+         "robust tuning against frequency error, overriding [FIRTP]ROBUST: none (one stage a mode), double (two "
+         "stages on the mode), straddle or straddle:SPREAD (zeros at f (1 -+ SPREAD); SPREAD chosen when not "
+         "given); see examples/VIBRATION.md");
+    return d;
+}
+
 namespace {
 
 po::options_description flag_descriptions() {
     po::options_description d("Options", 100, 50);
     d.add_options()("help,h", "show this help and exit");
-    d.add(machine_flags()).add(output_flags());
+    d.add(machine_flags()).add(mode_flags()).add(output_flags());
+    d.add_options()("report", po::value<std::string>()->value_name("DIR"),
+                    "write a self-contained Markdown report into DIR (created if missing): report.md with the "
+                    "machine, path, feed, axis kinematics, corner errors and acceleration spectrum, their PNGs "
+                    "(gnuplot), and with structural modes the vibration table of `firtp simulate`");
     return d;
 }
 
@@ -134,11 +153,18 @@ void read_output_flags(const po::variables_map& vm, PlanOptions& o) {
     if (const auto s = optional_value<std::string>(vm, "plot")) o.plot = *s;
 }
 
+void read_mode_flags(const po::variables_map& vm, PlanOptions& o) {
+    o.modes = optional_value<std::string>(vm, "modes");
+    o.robust = optional_value<std::string>(vm, "robust");
+}
+
 PlanOptions parse_plan_options(std::span<const std::string> args) {
     const po::variables_map vm = parse_flags(args, flag_descriptions(), "plan", true);
     PlanOptions o;
     read_machine_flags(vm, o);
+    read_mode_flags(vm, o);
     read_output_flags(vm, o);
+    if (const auto s = optional_value<std::string>(vm, "report")) o.report = *s;
     return o;
 }
 
@@ -151,8 +177,8 @@ std::string plan_help() {
             "everything succeeded.\n\n"
          << flag_descriptions()
          << "\nExit status: 0 success, 1 bad program/INI/output/gnuplot, 2 bad command line.\n"
-            "\nExample:\n  firtp plan examples/diamond.ngc --t1 0.148 --t2 0.089 --csv out.csv --json out.json"
-            " --plot out.png\n";
+            "\nExamples:\n  firtp plan examples/diamond.ngc --t1 0.148 --t2 0.089 --csv out.csv --json out.json"
+            " --plot out.png\n  firtp plan examples/diamond.ngc --ini examples/diamond_modes.ini --report report\n";
     return text.str();
 }
 

@@ -18,6 +18,16 @@ MachineConfig load_machine_config(const PlanOptions& options) {
         throw UsageError(e.what());  // names the flag
     }
     if (options.tolerance_meaning) machine.tolerance_meaning = *options.tolerance_meaning;
+    try {
+        if (options.modes) machine.tuning.modes = parse_modes(*options.modes, machine.limits.axes);
+    } catch (const ConfigError& e) {
+        throw UsageError(std::string("--modes: ") + e.what());
+    }
+    try {
+        if (options.robust) parse_robust(*options.robust, machine.tuning);
+    } catch (const ConfigError& e) {
+        throw UsageError(std::string("--robust: ") + e.what());
+    }
     return machine;
 }
 
