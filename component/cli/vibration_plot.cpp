@@ -66,11 +66,11 @@ std::string response_plot_script(const VibrationStudy& study, const std::filesys
     for (std::size_t m = 0; m < panels; ++m) {
         const PlantMode& p = study.plant[m];
         s << "set title " << gnuplot_quote(cat(plant_name(p), ", damping ", fixed_text(p.damping, 3),
-                                               ": residual after the last stop ",
+                                               ": largest residual at a stop ",
                                                fixed_text(study.cases[0].responses[m].max_stop_residual, 5), " (tuned), ",
                                                fixed_text(study.cases[1].responses[m].max_stop_residual, 5), " (untuned), ",
                                                fixed_text(study.cases[2].responses[m].max_stop_residual, 5),
-                                               " mm (S-curve, largest stop)"))
+                                               " mm (S-curve); dotted: end of motion"))
           << " noenhanced\n";
         // Each planner's end of motion, dotted.
         for (std::size_t c = 0; c < study.cases.size(); ++c)
