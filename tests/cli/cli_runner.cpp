@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -91,5 +92,17 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
 }
 
 std::filesystem::path example(const std::string& name) { return std::filesystem::path(FIRTP_EXAMPLES) / name; }
+
+bool gnuplot_on_path() {
+    const char* path = std::getenv("PATH");
+    std::string_view dirs = path ? path : "";
+    while (!dirs.empty()) {
+        const std::size_t colon = dirs.find(':');
+        const std::string candidate = std::string(dirs.substr(0, colon)) + "/gnuplot";
+        if (access(candidate.c_str(), X_OK) == 0) return true;
+        dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
+    }
+    return false;
+}
 
 }  // namespace firtp::cli_test

@@ -36,5 +36,6 @@ private:
 std::string read_file(const std::filesystem::path& path);
 void write_file(const std::filesystem::path& path, const std::string& text);
 std::filesystem::path example(const std::string& name);  // examples/<name> of the source tree
+bool gnuplot_on_path();  // plots are tested only where gnuplot is installed
 
 }  // namespace firtp::cli_test

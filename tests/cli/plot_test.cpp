@@ -11,18 +11,6 @@
 namespace firtp::cli_test {
 namespace {
 
-bool gnuplot_on_path() {
-    const char* path = std::getenv("PATH");
-    std::string_view dirs = path ? path : "";
-    while (!dirs.empty()) {
-        const std::size_t colon = dirs.find(':');
-        const std::string candidate = std::string(dirs.substr(0, colon)) + "/gnuplot";
-        if (access(candidate.c_str(), X_OK) == 0) return true;
-        dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
-    }
-    return false;
-}
-
 constexpr std::string_view png_signature("\x89PNG\r\n\x1a\n", 8);
 
 void expect_png(const std::filesystem::path& file) {

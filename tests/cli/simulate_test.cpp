@@ -17,18 +17,6 @@ namespace {
 
 using nlohmann::json;
 
-bool gnuplot_on_path() {
-    const char* path = std::getenv("PATH");
-    std::string_view dirs = path ? path : "";
-    while (!dirs.empty()) {
-        const std::size_t colon = dirs.find(':');
-        const std::string candidate = std::string(dirs.substr(0, colon)) + "/gnuplot";
-        if (access(candidate.c_str(), X_OK) == 0) return true;
-        dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
-    }
-    return false;
-}
-
 json simulate(std::vector<std::string> flags, const std::string& program = "diamond.ngc") {
     TempDir dir;
     std::vector<std::string> args{"simulate", example(program).string(), "--json", (dir / "out.json").string()};
