@@ -1,0 +1,284 @@
+// Offline planning in constant memory, and the cost of planning one block.
+//
+//   firtp_plan_stream --generate spiral|random [--blocks 1000000] [--seed 1] [--ini FILE] [--json]
+//                     [--max-growth-kib K]
+//   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json]
+//
+// Plans and samples block by block through Planner + Interpolator as the servo thread would
+// (plan_trajectory's loop), but keeps no samples: only running maxima. With --generate the program
+// is made on the fly, one block at a time, so memory is O(queue), not O(program):
+//   spiral  an Archimedean spiral from R 60 mm, 0.5 mm apart, in chords of 0.3-0.7 mm, F6000,
+//           G64 P0.05 (a long CAM-like chorded curve; at R 60 the filters' radial shrink
+//           F^2 sum(T^2) / (24 R) already allows the full feed within the tolerance);
+//   random  random short chords of 0.1-2 mm turning up to 90 degrees each, 100-300 mm/s,
+//           0.01-0.05 mm tolerances, X Y Z.
+// Machine: the built-in one (X Y Z, 300 mm/s, 5000 mm/s^2, 10^5 mm/s^3, 1 ms, T 60/50 ms) or --ini.
+//
+// Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
+// this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the
+// closed form sum(Tv) + sum(Td - Tk) + Td (as firtp plan), the largest path speed, axis velocity,
+// acceleration and jerk at the samples, and peak RSS (getrusage ru_maxrss) after the first tenth of
+// the blocks and at the end. Exit status 1 when the output does not rest exactly on the last
+// command, or when the peak RSS grew by more than --max-growth-kib after the first tenth.
+#include "bench_stats.hpp"
+
+#include <firtp/gcode.hpp>
+#include <firtp/ini.hpp>
+#include <firtp/interpolator.hpp>
+#include <firtp/machine.hpp>
+#include <firtp/planner.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <string>
+
+using namespace firtp;
+using namespace firtp::bench;
+
+namespace {
+
+// Blocks one at a time; nothing is kept.
+class Source {
+public:
+    virtual ~Source() = default;
+    virtual std::optional<Block> next() = 0;
+};
+
+class ProgramSource : public Source {
+public:
+    explicit ProgramSource(Program program) : program_(std::move(program)) {}
+    std::optional<Block> next() override {
+        if (next_ == program_.blocks.size()) return std::nullopt;
+        return program_.blocks[next_++];
+    }
+    const AxisVector& start() const { return program_.start; }
+
+private:
+    Program program_;
+    std::size_t next_ = 0;
+};
+
+class SpiralSource : public Source {
+public:
+    SpiralSource(long long blocks, std::uint64_t seed) : left_(blocks), rng_(seed) {}
+    std::optional<Block> next() override {
+        if (left_-- <= 0) return std::nullopt;
+        constexpr double r0 = 60.0, pitch = 0.5;
+        const double r = r0 + pitch * theta_ / (2.0 * std::numbers::pi);
+        theta_ += chord_(rng_) / r;
+        const double r1 = r0 + pitch * theta_ / (2.0 * std::numbers::pi);
+        Block b;
+        b.target[0] = r1 * std::cos(theta_);
+        b.target[1] = r1 * std::sin(theta_);
+        b.feed = 100.0;
+        b.tolerance = 0.05;
+        b.line = ++line_;
+        return b;
+    }
+    static AxisVector start() {
+        AxisVector s = AxisVector::Zero();
+        s[0] = 60.0;
+        return s;
+    }
+
+private:
+    long long left_;
+    std::mt19937_64 rng_;
+    std::uniform_real_distribution<double> chord_{0.3, 0.7};
+    double theta_ = 0.0;
+    std::int64_t line_ = 0;
+};
+
+class RandomChordSource : public Source {
+public:
+    RandomChordSource(long long blocks, std::uint64_t seed) : left_(blocks), rng_(seed) {
+        direction_[0] = 1.0;
+    }
+    std::optional<Block> next() override {
+        if (left_-- <= 0) return std::nullopt;
+        // Turn by up to 90 degrees about a random axis perpendicular to the direction.
+        AxisVector axis = AxisVector::Zero();
+        for (int a = 0; a < 3; ++a) axis[a] = unit_(rng_);
+        axis -= axis.dot(direction_) * direction_;
+        if (axis.norm() > 1e-9) {
+            const double angle = turn_(rng_);
+            direction_ = (std::cos(angle) * direction_ + std::sin(angle) * axis.normalized()).normalized();
+        }
+        if (at_.norm() > 200.0 && direction_.dot(at_) > 0.0) direction_ = -direction_;  // stay near the origin
+        at_ += direction_ * length_(rng_);
+        Block b;
+        b.target = at_;
+        b.feed = feed_(rng_);
+        b.tolerance = tolerance_(rng_);
+        b.line = ++line_;
+        return b;
+    }
+
+private:
+    long long left_;
+    std::mt19937_64 rng_;
+    std::uniform_real_distribution<double> unit_{-1.0, 1.0}, turn_{0.0, std::numbers::pi / 2.0},
+        length_{0.1, 2.0}, feed_{100.0, 300.0}, tolerance_{0.01, 0.05};
+    AxisVector direction_ = AxisVector::Zero();
+    AxisVector at_ = AxisVector::Zero();
+    std::int64_t line_ = 0;
+};
+
+int usage(const char* self) {
+    std::fprintf(stderr,
+                 "usage: %s (--generate spiral|random [--blocks N] [--seed S] | --program FILE.ngc) [--ini FILE] "
+                 "[--json] [--max-growth-kib K]\n",
+                 self);
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+    std::string generate, program_file, ini_file;
+    long long blocks = 1'000'000;
+    std::uint64_t seed = 1;
+    bool json = false;
+    long max_growth_kib = -1;
+    for (int i = 1; i < argc; ++i) {
+        const bool has_value = i + 1 < argc;
+        if (!std::strcmp(argv[i], "--json")) json = true;
+        else if (!std::strcmp(argv[i], "--generate") && has_value) generate = argv[++i];
+        else if (!std::strcmp(argv[i], "--program") && has_value) program_file = argv[++i];
+        else if (!std::strcmp(argv[i], "--ini") && has_value) ini_file = argv[++i];
+        else if (!std::strcmp(argv[i], "--blocks") && has_value) blocks = std::atoll(argv[++i]);
+        else if (!std::strcmp(argv[i], "--seed") && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (!std::strcmp(argv[i], "--max-growth-kib") && has_value) max_growth_kib = std::atol(argv[++i]);
+        else return usage(argv[0]);
+    }
+    if (generate.empty() == program_file.empty()) return usage(argv[0]);
+
+    const MachineConfig machine = ini_file.empty() ? default_machine() : load_machine(IniFile::read(ini_file));
+    const PlannerParameters parameters = machine.planner_parameters();
+    std::unique_ptr<Source> source;
+    AxisVector start = AxisVector::Zero();
+    std::string what;
+    if (!program_file.empty()) {
+        auto program = std::make_unique<ProgramSource>(read_gcode(program_file, machine));
+        start = program->start();
+        blocks = 0;
+        source = std::move(program);
+        what = program_file;
+    } else if (generate == "spiral") {
+        source = std::make_unique<SpiralSource>(blocks, seed);
+        start = SpiralSource::start();
+        what = "spiral";
+    } else if (generate == "random") {
+        source = std::make_unique<RandomChordSource>(blocks, seed);
+        what = "random";
+    } else {
+        return usage(argv[0]);
+    }
+
+    const FirChain chain(parameters.filters);
+    Interpolator interpolator(chain, parameters.period, parameters.queue_capacity, start, rate_limits(parameters));
+    Planner planner(parameters, chain, start);
+
+    Histogram add_cpu(50, 5'000'000), add_wall(50, 5'000'000);  // 50 ns buckets up to 5 ms: 800 KB each
+    const int axes = parameters.limits.axes;
+    double max_speed = 0.0, max_v = 0.0, max_a = 0.0, max_j = 0.0;
+    double tv_sum = 0.0, gaps = 0.0;
+    const double td = parameters.filters.delay();
+    long long planned = 0, corners = 0, ticks = 0;
+    long warm_peak_kib = 0;
+    const long long warm_after = blocks > 0 ? std::max<long long>(blocks / 10, 1) : 0;
+    AxisVector last_end = start, goal = start;
+    std::optional<Block> pending = source->next();
+
+    const std::int64_t cpu_begin = thread_cpu_ns(), wall_begin = wall_ns();
+    AxisState state;
+    for (;;) {
+        while (pending && interpolator.free() > 0) {
+            CornerReport corner;
+            bool has_corner = false;
+            const std::int64_t c0 = thread_cpu_ns();
+            const std::int64_t w0 = wall_ns();
+            const Result result = planner.add(*pending, interpolator, &corner, &has_corner);
+            const std::int64_t w1 = wall_ns();
+            const std::int64_t c1 = thread_cpu_ns();
+            if (result == Result::queue_full) break;
+            if (result == Result::invalid_block) {
+                std::fprintf(stderr, "line %lld: invalid block\n", static_cast<long long>(pending->line));
+                return 1;
+            }
+            add_cpu.add(c1 - c0);
+            add_wall.add(w1 - w0);
+            const double length = (pending->target - last_end).norm();
+            if (length >= min_block_length) {
+                tv_sum += length / pending->feed;
+                last_end = pending->target;
+            }
+            goal = pending->target;
+            if (has_corner) {
+                ++corners;
+                gaps += td - corner.tk;
+            }
+            if (++planned == warm_after) warm_peak_kib = peak_rss_kib();
+            pending = source->next();
+        }
+        interpolator.tick(state);
+        ++ticks;
+        max_speed = std::max(max_speed, state.velocity.norm());
+        for (int a = 0; a < axes; ++a) {
+            max_v = std::max(max_v, std::abs(state.velocity[a]));
+            max_a = std::max(max_a, std::abs(state.acceleration[a]));
+            max_j = std::max(max_j, std::abs(state.jerk[a]));
+        }
+        if (!pending && interpolator.idle()) break;
+    }
+    const double cpu_s = static_cast<double>(thread_cpu_ns() - cpu_begin) * 1e-9;
+    const double wall_s = static_cast<double>(wall_ns() - wall_begin) * 1e-9;
+    const bool exact = state.position == goal && state.velocity == AxisVector::Zero();
+    const long end_peak_kib = peak_rss_kib();
+    if (warm_peak_kib == 0) warm_peak_kib = end_peak_kib;
+    const double cycle_time = state.time;
+    const double closed_form = tv_sum + gaps + td;
+    // What plan_trajectory would have held: every sample.
+    const double samples_mib = static_cast<double>(ticks) * static_cast<double>(sizeof(AxisState)) / (1024.0 * 1024.0);
+    const bool flat = max_growth_kib < 0 || end_peak_kib - warm_peak_kib <= max_growth_kib;
+
+    if (json) {
+        std::printf("{\"source\":\"%s\",\"blocks\":%lld,\"corners\":%lld,\"ticks\":%lld,\"wall_s\":%.3f,\"cpu_s\":%.3f,"
+                    "\"blocks_per_s\":%.0f,\"blocks_per_cpu_s\":%.0f,\"add_cpu_ns\":%s,\"add_wall_ns\":%s,"
+                    "\"cycle_time_s\":%.6f,\"closed_form_cycle_time_s\":%.6f,"
+                    "\"max_speed\":%.3f,\"max_axis_velocity\":%.3f,\"max_axis_acceleration\":%.3f,\"max_axis_jerk\":%.3f,"
+                    "\"peak_rss_kib_after_first_tenth\":%ld,\"peak_rss_kib\":%ld,\"samples_mib_if_kept\":%.1f,"
+                    "\"end_exact\":%s,\"flat\":%s}\n",
+                    what.c_str(), planned, corners, ticks, wall_s, cpu_s, static_cast<double>(planned) / wall_s,
+                    static_cast<double>(planned) / cpu_s, add_cpu.json().c_str(), add_wall.json().c_str(), cycle_time,
+                    closed_form, max_speed, max_v, max_a, max_j, warm_peak_kib, end_peak_kib,
+                    samples_mib, exact ? "true" : "false", flat ? "true" : "false");
+    } else {
+        std::printf("%s: %lld blocks, %lld corners, %lld servo periods planned and sampled in %.2f s (%.2f s CPU)\n",
+                    what.c_str(), planned, corners, ticks, wall_s, cpu_s);
+        std::printf("  %.0f blocks/s (wall), %.0f blocks per CPU second\n", static_cast<double>(planned) / wall_s,
+                    static_cast<double>(planned) / cpu_s);
+        std::printf("  planner.add, thread CPU clock: mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us\n",
+                    add_cpu.mean() * 1e-3, static_cast<double>(add_cpu.quantile(0.5)) * 1e-3,
+                    static_cast<double>(add_cpu.quantile(0.99)) * 1e-3, static_cast<double>(add_cpu.max()) * 1e-3);
+        std::printf("  planner.add, wall clock:       mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us (maxima include preemption)\n",
+                    add_wall.mean() * 1e-3, static_cast<double>(add_wall.quantile(0.5)) * 1e-3,
+                    static_cast<double>(add_wall.quantile(0.99)) * 1e-3, static_cast<double>(add_wall.max()) * 1e-3);
+        std::printf("  cycle time %.4f s (closed form %.4f s)\n", cycle_time, closed_form);
+        std::printf("  max path speed %.1f, axis v %.1f, a %.0f, j %.0f\n", max_speed, max_v, max_a, max_j);
+        std::printf("  peak RSS %ld KiB after the first tenth, %ld KiB at the end (keeping the samples: %.0f MiB more)\n",
+                    warm_peak_kib, end_peak_kib, samples_mib);
+        std::printf("  end: %s\n", exact ? "exactly on the last command" : "NOT on the last command");
+    }
+    if (!flat) std::fprintf(stderr, "peak RSS grew by %ld KiB after the first tenth\n", end_peak_kib - warm_peak_kib);
+    return exact && flat ? 0 : 1;
+} catch (const std::exception& e) {
+    std::fprintf(stderr, "firtp_plan_stream: %s\n", e.what());
+    return 1;
+}
