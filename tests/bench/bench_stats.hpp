@@ -31,21 +31,27 @@ inline std::int64_t wall_ns() {
         .count();
 }
 
-// Peak resident set of this process so far (getrusage ru_maxrss), KiB.
+// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"); 0 where unavailable.
+inline long proc_status_kib(const std::string& field) {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind(field + ":", 0) == 0) return std::stol(line.substr(field.size() + 1));
+    return 0;
+}
+
+// Peak resident set of this program so far, KiB: VmHWM, the high-water mark of this address
+// space. Not getrusage's ru_maxrss: Linux carries that over exec from the parent (a Python
+// or ctest parent's size would show up as ours); where /proc is missing, ru_maxrss it is.
 inline long peak_rss_kib() {
+    if (const long hwm = proc_status_kib("VmHWM"); hwm > 0) return hwm;
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss;
 }
 
-// Current resident set (VmRSS in /proc/self/status), KiB; 0 where unavailable.
-inline long current_rss_kib() {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
-    return 0;
-}
+// Current resident set (VmRSS), KiB.
+inline long current_rss_kib() { return proc_status_kib("VmRSS"); }
 
 // Durations in ns: counted in buckets of `bucket_ns` below `limit_ns` (quantiles are a bucket's
 // lower edge), the rare longer ones kept as they are; mean and max are exact. Memory is fixed up

@@ -17,7 +17,7 @@
 // Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
 // this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the
 // closed form sum(Tv) + sum(Td - Tk) + Td (as firtp plan), the largest path speed, axis velocity,
-// acceleration and jerk at the samples, and peak RSS (getrusage ru_maxrss) after the first tenth of
+// acceleration and jerk at the samples, and peak RSS (VmHWM, bench_stats.hpp) after the first tenth of
 // the blocks and at the end. Exit status 1 when the output does not rest exactly on the last
 // command, or when the peak RSS grew by more than --max-growth-kib after the first tenth.
 #include "bench_stats.hpp"
