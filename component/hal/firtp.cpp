@@ -17,6 +17,7 @@
 #include "hal.h"
 
 #include "component_core.hpp"
+#include "hal_pin_access.hpp"
 #include "stream_records.hpp"
 
 #include <cstdint>
@@ -121,6 +122,8 @@ bool has_state_stream = false;
 std::uint32_t state_overruns = 0;
 std::uint32_t ticks = 0;
 
+namespace pin = firtp::hal_pin;  // pins are shared with other threads (hal_pin_access.hpp)
+
 bool read_block(void*, firtp::stream::BlockRecord& record) {
     hal_stream_data buffer[firtp::stream::block_elements];
     if (hal_stream_read(&block_stream, buffer, nullptr) != 0) return false;
@@ -131,39 +134,40 @@ bool read_block(void*, firtp::stream::BlockRecord& record) {
 // One servo period.
 void update(void*, long) {
     firtp::ComponentInputs in;
-    in.enable = *pins->enable;
-    in.feed_scale = *pins->feed_scale;
-    in.hold = *pins->hold;
-    in.abort = *pins->abort;
-    in.strobe = *pins->block_strobe;
-    for (int a = 0; a < firtp::max_axes; ++a) in.pin_block.block.target[a] = *pins->block_target[a];
-    in.pin_block.block.feed = *pins->block_feed;
-    in.pin_block.block.tolerance = *pins->block_tolerance;
-    in.pin_block.block.termination = *pins->block_exact_stop ? firtp::Termination::exact_stop : firtp::Termination::blend;
-    in.pin_block.block.line = *pins->block_line;
-    in.pin_block.program = *pins->block_program;
-    in.pin_block.seq = *pins->block_seq;
-    in.pin_motion_type = *pins->block_motion_type;
+    in.enable = pin::get(pins->enable);
+    in.feed_scale = pin::get(pins->feed_scale);
+    in.hold = pin::get(pins->hold);
+    in.abort = pin::get(pins->abort);
+    in.strobe = pin::get(pins->block_strobe);
+    for (int a = 0; a < firtp::max_axes; ++a) in.pin_block.block.target[a] = pin::get(pins->block_target[a]);
+    in.pin_block.block.feed = pin::get(pins->block_feed);
+    in.pin_block.block.tolerance = pin::get(pins->block_tolerance);
+    in.pin_block.block.termination =
+        pin::get(pins->block_exact_stop) ? firtp::Termination::exact_stop : firtp::Termination::blend;
+    in.pin_block.block.line = pin::get(pins->block_line);
+    in.pin_block.program = pin::get(pins->block_program);
+    in.pin_block.seq = pin::get(pins->block_seq);
+    in.pin_motion_type = pin::get(pins->block_motion_type);
 
     firtp::ComponentOutputs out;
     core->update(in, {has_block_stream ? read_block : nullptr, nullptr}, out);
 
     for (int a = 0; a < axes; ++a) {
-        *pins->axis[a].pos_cmd = out.state.position[a];
-        *pins->axis[a].vel_cmd = out.state.velocity[a];
-        *pins->axis[a].acc_cmd = out.state.acceleration[a];
+        pin::set(pins->axis[a].pos_cmd, out.state.position[a]);
+        pin::set(pins->axis[a].vel_cmd, out.state.velocity[a]);
+        pin::set(pins->axis[a].acc_cmd, out.state.acceleration[a]);
     }
-    *pins->block_ack = out.ack;
-    *pins->busy = out.busy;
-    *pins->done = out.done;
-    *pins->queue_depth = out.queue_depth;
-    *pins->queue_free = out.queue_free;
-    *pins->current_line = static_cast<std::int32_t>(out.state.line);
-    *pins->state = static_cast<std::int32_t>(out.mode);
-    *pins->error_code = static_cast<std::int32_t>(out.error);
-    *pins->program = out.program;
-    *pins->next_seq = out.next_seq;
-    *pins->rejected = out.rejected;
+    pin::set(pins->block_ack, out.ack);
+    pin::set(pins->busy, out.busy);
+    pin::set(pins->done, out.done);
+    pin::set(pins->queue_depth, out.queue_depth);
+    pin::set(pins->queue_free, out.queue_free);
+    pin::set(pins->current_line, static_cast<std::int32_t>(out.state.line));
+    pin::set(pins->state, static_cast<std::int32_t>(out.mode));
+    pin::set(pins->error_code, static_cast<std::int32_t>(out.error));
+    pin::set(pins->program, out.program);
+    pin::set(pins->next_seq, out.next_seq);
+    pin::set(pins->rejected, out.rejected);
     if (has_state_stream) {
         hal_stream_data record[firtp::stream::state_elements];
         for (int g = 0; g < firtp::stream::groups_for(axes); ++g) {
@@ -172,8 +176,8 @@ void update(void*, long) {
         }
     }
     ticks = ticks + 1;
-    *pins->tick = ticks;
-    *pins->state_overruns = state_overruns;
+    pin::set(pins->tick, ticks);
+    pin::set(pins->state_overruns, state_overruns);
 }
 
 double number(const char* text, double fallback) { return text && *text ? std::strtod(text, nullptr) : fallback; }

@@ -2,6 +2,7 @@
 
 #include <hal.h>
 
+#include "hal_pin_access.hpp"
 #include "stream_records.hpp"
 
 #include <algorithm>
@@ -104,8 +105,8 @@ void Bridge::report(std::int32_t error, std::string text) {
 }
 
 bool Bridge::component_idle() const {
-    return *pins_->queue_depth == 0 && hal_stream_depth(&streams_->blocks) == 0 &&
-           *pins_->state != firtp_lcm::status_t::ABORTING;
+    return hal_pin::get(pins_->queue_depth) == 0 && hal_stream_depth(&streams_->blocks) == 0 &&
+           hal_pin::get(pins_->state) != firtp_lcm::status_t::ABORTING;
 }
 
 void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* m) {
@@ -114,7 +115,7 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
         ++rejected_;
         report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
         fault_ = true;  // the program cannot go on without this block: stop it on the path
-        *pins_->abort = true;
+        hal_pin::set(pins_->abort, true);
         return;
     }
     const Verdict verdict = sequence_.check(m->program, m->seq, component_idle());
@@ -150,7 +151,7 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
     record.seq = static_cast<std::uint32_t>(m->seq);
     hal_stream_data buffer[stream::block_elements];
     stream::pack(record, buffer);
-    *pins_->abort = false;
+    hal_pin::set(pins_->abort, false);
     hal_stream_write(&streams_->blocks, buffer);
     sequence_.accepted(m->program, m->seq);
     ++forwarded_;
@@ -169,9 +170,9 @@ void Bridge::on_control(const lcm::ReceiveBuffer*, const std::string&, const fir
     }
     hold_ = m->hold;
     abort_ = m->abort;
-    *pins_->feed_scale = feed_scale_;
-    *pins_->hold = hold_;
-    *pins_->abort = abort_ || fault_;
+    hal_pin::set(pins_->feed_scale, feed_scale_);
+    hal_pin::set(pins_->hold, hold_);
+    hal_pin::set(pins_->abort, abort_ || fault_);
     status_due_ = true;
 }
 
@@ -225,16 +226,16 @@ void Bridge::publish_status() {
     firtp_lcm::status_t s;
     s.utime = messages::now_utime();
     s.seq = ++status_seq_;
-    s.tick = *pins_->tick;
+    s.tick = hal_pin::get(pins_->tick);
     s.program = sequence_.program();
     s.next_seq = sequence_.next_seq();
     const int stream_depth = hal_stream_depth(&streams_->blocks);
-    s.queue_depth = *pins_->queue_depth + stream_depth;
+    s.queue_depth = hal_pin::get(pins_->queue_depth) + stream_depth;
     s.queue_free = hal_stream_maxdepth(&streams_->blocks) - 1 - stream_depth;
-    s.current_line = *pins_->current_line;
-    s.state = fault_ ? std::int8_t{firtp_lcm::status_t::ERROR} : static_cast<std::int8_t>(*pins_->state);
+    s.current_line = hal_pin::get(pins_->current_line);
+    s.state = fault_ ? std::int8_t{firtp_lcm::status_t::ERROR} : static_cast<std::int8_t>(hal_pin::get(pins_->state));
     s.feed_scale = feed_scale_;
-    const std::int32_t component_error = *pins_->error_code;
+    const std::int32_t component_error = hal_pin::get(pins_->error_code);
     if (error_ == 0 && component_error != 0) {
         s.error_code = component_error;
         s.error_text = describe_component_error(component_error);
@@ -242,7 +243,7 @@ void Bridge::publish_status() {
         s.error_code = error_;
         s.error_text = error_text_;
     }
-    s.rejected = rejected_ + *pins_->rejected;
+    s.rejected = rejected_ + hal_pin::get(pins_->rejected);
     lcm_->publish(messages::status_channel, &s);
     periods_since_status_ = 0;
     status_due_ = false;
