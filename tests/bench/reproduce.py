@@ -2,7 +2,7 @@
 """Reproduce the figures README.md quotes, on this machine, in one run (docs/BENCHMARKS.md).
 
     tests/bench/reproduce.sh BUILD_DIR [--quick] [--out FILE.md] [--json FILE.json]
-        [--skip-stream] [--skip-linuxcnc] [--wait-linuxcnc SECONDS]
+        [--skip-stream] [--skip-linuxcnc] [--skip-ctest] [--plan-timeout S] [--wait-linuxcnc S]
 
 BUILD_DIR is a Release build with the benchmarks (cmake -S . -B BUILD_DIR; cmake --build BUILD_DIR).
 Sections, each printed as it finishes:
@@ -210,7 +210,7 @@ def plan_blocks(r, build, gb, quick):
 
 
 # 4: a million blocks -------------------------------------------------------------------------------
-def million(r, build, quick):
+def million(r, build, quick, timeout):
     blocks = 100_000 if quick else 1_000_000
     r.section("Offline planning of a %s-block program (firtp_plan_stream --generate)" % format(blocks, ","),
               "Generated on the fly, planned and sampled block by block (Planner + Interpolator, queue of 256 "
@@ -220,9 +220,20 @@ def million(r, build, quick):
               "mark (VmHWM); \"if kept\" is what plan_trajectory / firtp plan would hold in samples alone.")
     rows, raw = [], {}
     for kind in ("spiral", "random"):
-        p = run([os.path.join(build, "bin", "firtp_plan_stream"), "--generate", kind, "--blocks", str(blocks),
-                 "--max-growth-kib", "1024", "--json"], check=False)
-        d = json.loads(p.stdout.strip().splitlines()[-1])
+        cmd = [os.path.join(build, "bin", "firtp_plan_stream"), "--generate", kind, "--blocks", str(blocks),
+               "--max-growth-kib", "1024", "--json"]
+        try:
+            p = run(cmd, timeout=timeout, check=False)
+            d = json.loads(p.stdout.strip().splitlines()[-1])
+        except subprocess.TimeoutExpired:
+            raw[kind] = {"timeout_s": timeout}
+            rows.append([kind, format(blocks, ","), "did not finish within %d s" % timeout] + [""] * 8)
+            continue
+        except (ValueError, IndexError):
+            raw[kind] = {"failed": p.returncode}
+            rows.append([kind, format(blocks, ","), "failed (exit %d): %s" % (p.returncode, p.stderr.strip()[-200:])]
+                        + [""] * 8)
+            continue
         raw[kind] = d
         c = d["add_cpu_ns"]
         rows.append([kind, format(d["blocks"], ","), format(d["ticks"], ","), "%.0f" % d["blocks_per_s"],
@@ -401,6 +412,8 @@ def main():
     ap.add_argument("--skip-stream", action="store_true")
     ap.add_argument("--skip-linuxcnc", action="store_true")
     ap.add_argument("--skip-ctest", action="store_true")
+    ap.add_argument("--plan-timeout", type=int, default=300,
+                    help="seconds each generated program may take (300); longer is reported, not fatal")
     ap.add_argument("--wait-linuxcnc", type=int, default=600, help="seconds to wait for other HAL sessions (600)")
     a = ap.parse_args()
     build = os.path.abspath(a.build)
@@ -425,7 +438,7 @@ def main():
     tick_means(r, gb, a.quick)
     worst_tick(r, build, a.quick)
     plan_blocks(r, build, gb, a.quick)
-    million(r, build, a.quick)
+    million(r, build, a.quick, a.plan_timeout)
     if a.skip_stream:
         r.section("Sustained LCM block rate, no loss (tests/bench/stream_bench.sh)", "Skipped (--skip-stream).")
     else:
@@ -450,7 +463,7 @@ def main():
         json.dump(r.raw, f, indent=1)
     log("\nwrote %s and %s (%.0f s)" % (md_path, json_path, time.time() - begin))
     failed = any(not d["end_exact"] for d in r.raw.get("worst_tick", [])) or \
-        any(not (d["end_exact"] and d["flat"]) for d in r.raw.get("million", {}).values())
+        any(not (d.get("end_exact", True) and d.get("flat", True)) for d in r.raw.get("million", {}).values())
     return 1 if failed else 0
 
 
