@@ -1,6 +1,7 @@
 // How a program ends: done, failed (with the component's text), lost, aborted.
 #include "test_support.hpp"
 
+#include <firtp/messages.hpp>
 #include <firtp_lcm/status_t.hpp>
 
 #include <gmock/gmock.h>
@@ -66,6 +67,31 @@ TEST_F(OutcomeTest, ErrorStateFailsWithItsText) {
     });
     EXPECT_EQ(result, Result::failed);
     EXPECT_EQ(host.error(), "following error on X");
+}
+
+// Corrupt FIRTP_STATUS messages (a string length of 0, which lcm-gen 1.3.1's decode threw on, and
+// noise) between the component's good ones: dropped, and the program runs to its end. Before
+// lcm-types/fix_string_decode.cmake the first one terminated the host (found by fuzz_lcm).
+TEST_F(OutcomeTest, CorruptStatusMessagesAreDroppedNotFatal) {
+    FakeComponent component(lcm, 8);
+    const Program program = line_program(6);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    status_t corrupt{};
+    corrupt.program = 1000;
+    corrupt.error_text = "x";
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(corrupt.getEncodedSize()));
+    corrupt.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    constexpr std::size_t length_at = 8 + 5 * 8 + 3 * 4 + 1 + 8 + 4;  // error_text's length
+    for (int i = 0; i < 4; ++i) bytes[length_at + i] = 0;
+    const std::vector<unsigned char> noise(40, 0x5a);
+    const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
+        const char* channel = firtp::messages::status_channel;
+        if (tick % 7 == 0) lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+        if (tick % 11 == 0) lcm.publish(channel, noise.data(), static_cast<unsigned>(noise.size()));
+    });
+    EXPECT_EQ(result, Result::done) << host.error();
+    EXPECT_EQ(seqs(component.accepted), one_to(6));
 }
 
 TEST_F(OutcomeTest, OneOffRefusalIsRepairedByTheResend) {

@@ -110,6 +110,34 @@ TEST_F(DumpTool, OneLinePerEvent) {
     EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n'), 14) << run.out;
 }
 
+// A status event whose string length is 0 (lcm-gen's decode would throw on it): one "?" line,
+// and the tool goes on with the next event.
+TEST(DumpToolErrors, CorruptStatusIsShownNotFatal) {
+    test::TempFile file{".lcmlog"};
+    {
+        lcm::LogFile log(file.string(), "w");
+        ASSERT_TRUE(log.good());
+        firtp_lcm::status_t status{};
+        status.seq = 1;
+        status.error_text = "x";
+        std::vector<unsigned char> bytes(static_cast<std::size_t>(status.getEncodedSize()));
+        status.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+        constexpr std::size_t length_at = 8 + 5 * 8 + 3 * 4 + 1 + 8 + 4;
+        for (int i = 0; i < 4; ++i) bytes[length_at + i] = 0;
+        lcm::LogEvent event{};
+        event.timestamp = 1;
+        event.channel = status_channel;
+        event.datalen = static_cast<std::int32_t>(bytes.size());
+        event.data = bytes.data();
+        log.writeEvent(&event);
+        write(log, control_channel, 2, firtp_lcm::control_t{});
+    }
+    const ToolRun run = dump(file.string());
+    ASSERT_EQ(run.code, 0) << run.out;
+    EXPECT_TRUE(contains(run.out, "1 FIRTP_STATUS ? 87 bytes\n")) << run.out;
+    EXPECT_TRUE(contains(run.out, "2 FIRTP_CONTROL control_t seq=0")) << run.out;
+}
+
 TEST_F(DumpTool, ChannelFilterMatchesWholeName) {
     ToolRun run = dump("--channel 'FIRTP_AXIS.*' " + file_.string());
     ASSERT_EQ(run.code, 0) << run.out;

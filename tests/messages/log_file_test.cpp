@@ -2,6 +2,7 @@
 #include "sample.hpp"
 
 #include <cstring>
+#include <limits>
 #include <vector>
 
 namespace firtp::messages {
@@ -143,6 +144,26 @@ TEST(Decode, WrongTypeFails) {
     const auto bytes = encode(sample_status());
     firtp_lcm::block_t message;
     EXPECT_LT(message.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0);
+}
+
+// lcm-gen 1.3.1 checks a string's length against the buffer but not against 1: with a length of
+// 0 or less, status_t::decode threw std::length_error or (INT32_MIN) copied 2 GiB from past the
+// buffer (found by tests/fuzz/fuzz_lcm). lcm-types/fix_string_decode.cmake makes it refuse them.
+TEST(Decode, StringLengthBelowOneIsRefused) {
+    const auto good = encode(sample_status());
+    constexpr std::size_t length_at = 8 + 5 * 8 + 3 * 4 + 1 + 8 + 4;  // hash, then the fields before error_text
+    ASSERT_EQ(good[length_at + 3], sample_status().error_text.size() + 1);  // big-endian, with its \0
+    for (std::int32_t length : {0, -1, -1000, std::numeric_limits<std::int32_t>::min()}) {
+        auto bytes = good;
+        for (int i = 0; i < 4; ++i)
+            bytes[length_at + i] = static_cast<unsigned char>(static_cast<std::uint32_t>(length) >> (24 - 8 * i));
+        firtp_lcm::status_t status;
+        EXPECT_LT(status.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0) << length;
+    }
+    auto empty = good;  // length 1: the empty string
+    for (int i = 0; i < 4; ++i) empty[length_at + i] = i == 3 ? 1 : 0;
+    firtp_lcm::status_t status;
+    EXPECT_GT(status.decode(empty.data(), 0, static_cast<int>(empty.size())), 0);
 }
 
 struct CountingSink {
