@@ -19,7 +19,7 @@ Sections, each printed as it finishes:
      installed and no other HAL session runs (waits for rtapi_app to go away)
   8. the test-suite figures (paper figures, randomized suites, drift): ctest on those tests
 --quick: fewer repetitions and ticks, 100,000 blocks instead of 10^6, one short stream run, no
-LinuxCNC and no ctest; about two minutes. The full run takes about 15 minutes.
+LinuxCNC and no ctest; about 25 s. The full run takes about 8 minutes.
 Results: a Markdown table on stdout and in --out (default BUILD_DIR/bench-results/results.md),
 every raw figure in --json (default BUILD_DIR/bench-results/results.json).
 """
@@ -150,8 +150,10 @@ def worst_tick(r, build, quick):
     ticks = 1_000_000 if quick else 10_000_000
     r.section("Servo tick, worst case over a long run (firtp_worst_tick)",
               "%s ticks of random moves per configuration (0.05-40 mm, 50-300 mm/s, every 50th an exact stop), each "
-              "tick timed alone. Thread CPU clock: the code's time (the clock's own cost, the \"floor\", included). "
-              "Wall clock: maxima include preemption by other jobs on this shared VM; they say nothing about the code. "
+              "tick timed alone. Thread CPU clock: leaves out the time the thread waits for a core, but on a VM it still "
+              "counts interrupts and the hypervisor's steal, and includes its own system call (the \"floor\"). Wall "
+              "clock: its maxima include preemption by other jobs on this shared VM. So the tick's own tail is the wall "
+              "clock's p99.99; the maxima of both clocks are the machine's (docs/BENCHMARKS.md, \"Two clocks\"). "
               "End: the output at rest equals the last command bit for bit." % format(ticks, ","))
     configs = [(3, 2), (3, 3), (9, 2), (9, 3), (9, 4)]
     rows, raw = [], []
@@ -361,7 +363,10 @@ def linuxcnc(r, build, wait):
         return
     table = [l for l in p.stdout.splitlines() if l.startswith("|")]
     rows = [[c.strip() for c in l.strip("|").split("|")] for l in table]
-    main = [x for x in rows if len(x) == 8 and x[1] in ("tpmod", "firtp_tp")]
+    main = []  # compare.py prints each row as it goes, then the whole table: keep the first of each
+    for x in rows:
+        if len(x) == 8 and x[1] in ("tpmod", "firtp_tp") and x not in main:
+            main.append(x)
     r.raw["linuxcnc"] = {"stdout": p.stdout, "rows": main}
     full = p.stdout[p.stdout.find("| program | planner"):] if "| program | planner" in p.stdout else ""
     r.md += full.strip().splitlines()
@@ -412,8 +417,8 @@ def main():
     ap.add_argument("--skip-stream", action="store_true")
     ap.add_argument("--skip-linuxcnc", action="store_true")
     ap.add_argument("--skip-ctest", action="store_true")
-    ap.add_argument("--plan-timeout", type=int, default=300,
-                    help="seconds each generated program may take (300); longer is reported, not fatal")
+    ap.add_argument("--plan-timeout", type=int, default=120,
+                    help="seconds each generated program may take (120); longer is reported, not fatal")
     ap.add_argument("--wait-linuxcnc", type=int, default=600, help="seconds to wait for other HAL sessions (600)")
     a = ap.parse_args()
     build = os.path.abspath(a.build)
@@ -428,8 +433,8 @@ def main():
     r.raw["environment"] = env
     begin = time.time()
     r.md += ["## Results: %s" % env["date"], "",
-             "`tests/bench/reproduce.sh %s%s`, commit %s, %s build; %s x %s, Linux %s; load average at start %s." % (
-                 a.build, " --quick" if a.quick else "", env["commit"], env["build_type"] or "?", env["cpus"],
+             "`tests/bench/reproduce.sh %s`, commit %s, %s build; %s x %s, Linux %s; load average at start %s." % (
+                 " ".join(sys.argv[1:]), env["commit"], env["build_type"] or "?", env["cpus"],
                  env["cpu"], env["kernel"], " ".join(env["load_average"]))]
     if env["build_type"] != "Release":
         r.text("WARNING: not a Release build: timings are not comparable with the README.")
