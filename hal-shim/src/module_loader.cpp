@@ -87,17 +87,20 @@ Status store_item(Module& m, const std::string& pname, char kind, void* var, int
       if (!parse_long(text, v) || v < INT_MIN || v > INT_MAX)
         return Status::error(-EINVAL, "loadrt " + m.name + ": " + pname + "='" + text +
                                           "' is not an int");
+      m.saved.push_back({&static_cast<int*>(var)[idx], 'i', static_cast<int*>(var)[idx], nullptr});
       static_cast<int*>(var)[idx] = static_cast<int>(v);
       return {};
     case 'l':
       if (!parse_long(text, v))
         return Status::error(-EINVAL, "loadrt " + m.name + ": " + pname + "='" + text +
                                           "' is not a long");
+      m.saved.push_back({&static_cast<long*>(var)[idx], 'l', static_cast<long*>(var)[idx], nullptr});
       static_cast<long*>(var)[idx] = v;
       return {};
     case 's': {
       char* copy = strdup(text.c_str());
       m.owned_strings.push_back(copy);
+      m.saved.push_back({&static_cast<char**>(var)[idx], 's', 0, static_cast<char**>(var)[idx]});
       static_cast<char**>(var)[idx] = copy;
       return {};
     }
@@ -191,6 +194,12 @@ std::vector<int> comps_of(State& s, const std::string& module) {
 /// Frees what a failed or unloaded module leaves: components, strings, the handle.
 void discard(State& s, Module& m) {
   for (int id : comps_of(s, m.name)) comp_exit(id);
+  for (auto it = m.saved.rbegin(); it != m.saved.rend(); ++it) {  // as before loadrt, last set first
+    if (it->kind == 'i') *static_cast<int*>(it->address) = static_cast<int>(it->integer);
+    if (it->kind == 'l') *static_cast<long*>(it->address) = it->integer;
+    if (it->kind == 's') *static_cast<char**>(it->address) = it->string;
+  }
+  m.saved.clear();
   if (m.handle != nullptr) dlclose(m.handle);
   for (char* p : m.owned_strings) std::free(p);
   m.owned_strings.clear();

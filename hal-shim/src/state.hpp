@@ -93,6 +93,16 @@ struct Module {
   std::string name, path;
   void* handle = nullptr;             // nullptr for built-in 'threads'
   std::vector<char*> owned_strings;   // strdup'd string module parameters
+  /// Every parameter element loadrt set, with its value before: restored (last first) before
+  /// dlclose. dlclose may leave the module mapped (a C++ module with unique symbols stays), and
+  /// its statics would keep this load's values, string pointers into the freed owned_strings.
+  struct Saved {
+    void* address;
+    char kind;  // 'i', 'l', 's'
+    long integer;
+    char* string;
+  };
+  std::vector<Saved> saved;
   std::vector<std::string> threads;   // built-in 'threads': the threads it created
 };
 
