@@ -14,6 +14,8 @@ ComponentSettings checked(const ComponentSettings& s) {
     if (s.max_blocks_per_period < 1) throw std::invalid_argument("max_blocks_per_period must be at least 1");
     if (!(s.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
     if (const char* why = validate_rate(s.planner); *why) throw std::invalid_argument(why);
+    if (const char* why = validate(s.planner.filters); *why) throw std::invalid_argument(why);
+    if (const char* why = validate_window(s.planner.filters, s.planner.period); *why) throw std::invalid_argument(why);
     return s;
 }
 

@@ -25,6 +25,13 @@ const char* validate(const FilterTimes& filters) {
     return "";
 }
 
+const char* validate_window(const FilterTimes& filters, double period) {
+    if (!(std::isfinite(period) && period > 0.0)) return "the servo period must be positive and finite";
+    if (!(filters.delay() <= max_window_periods * period))
+        return "the filter delay T1 + ... + Tn is longer than 20000 servo periods (20 s at 1 ms)";
+    return "";
+}
+
 namespace {
 
 // Largest ratio over the axes in use, 0 when no axis has both values.

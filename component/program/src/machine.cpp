@@ -36,11 +36,27 @@ void read_period(const IniFile& ini, MachineConfig& m) {
     m.period = *ns * 1e-9;
 }
 
+// A key in [AXIS_<L>] that looks like a limit but is none firtp or LinuxCNC knows would leave the
+// built-in limit in force (MAX_ACCELLERATION = 500 would plan at 5000 units/s^2): refused. Other
+// keys (LinuxCNC's MIN_LIMIT, FERROR, ...) are not firtp's business.
+void check_axis_keys(const IniFile& ini, const std::string& section) {
+    static constexpr std::string_view known[] = {"MAX_VELOCITY", "MAX_ACCELERATION", "MAX_JERK", "MAX_LIMIT",
+                                                 "MAX_OUTPUT"};
+    for (const IniFile::Entry* e : ini.section(section)) {
+        if (std::find(std::begin(known), std::end(known), e->key) != std::end(known)) continue;
+        std::string upper = e->key;
+        std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        if (upper.rfind("MAX_", 0) == 0 || upper.rfind("MAX", 0) == 0)
+            fail(ini, *e, "unknown limit key (firtp reads MAX_VELOCITY, MAX_ACCELERATION, MAX_JERK; keys are case sensitive)");
+    }
+}
+
 void read_axes(const IniFile& ini, MachineConfig& m) {
     if (const auto v = positive(ini, "TRAJ", "MAX_LINEAR_VELOCITY")) m.limits.max_linear_velocity = *v;
     for (int i = 0; i < max_axes; ++i) {
         const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(i)];
         if (ini.section(section).empty()) continue;
+        check_axis_keys(ini, section);
         m.limits.axes = std::max(m.limits.axes, i + 1);
         AxisLimits& axis = m.limits.axis[static_cast<std::size_t>(i)];
         if (const auto v = positive(ini, section, "MAX_VELOCITY")) axis.max_velocity = *v;
@@ -97,6 +113,61 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
         else if (v == "contour") m.tolerance_meaning = ToleranceMeaning::contour;
         else fail(ini, *e, cat("'", e->value, "' must be corner or contour"));
     }
+}
+
+std::string short_number(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+// The machine's filter times, checked at load so that impossible ones are refused naming the key
+// they come from: a stage that is neither given nor derivable, modes that cannot be tuned, and a
+// filter window longer than the planner is built for (validate_window: a jerk limit of 1 gives
+// T2 = a / j = 5000 s, whose window would take gigabytes).
+void check_filters(const IniFile& ini, const MachineConfig& m) {
+    const IniFile::Entry* modes = ini.find("FIRTP", "MODES");
+    const IniFile::Entry* stages = ini.find("FIRTP", "STAGES");
+    const auto at_file = [&](const std::string& text) { throw ConfigError(cat(ini.file_name(), ":0: ", text)); };
+    FilterTimes f;
+    try {
+        f = m.filter_times();
+    } catch (const ConfigError& e) {
+        if (modes) fail(ini, *modes, e.what());
+        if (stages) fail(ini, *stages, e.what());
+        at_file(e.what());
+    }
+    if (*validate_window(f, m.period) == '\0') return;
+
+    const std::string text = cat("the filter delay T1 + ... + Tn = ", short_number(f.delay()), " s is ",
+                                 short_number(std::round(f.delay() / m.period)), " servo periods (at most ",
+                                 short_number(max_window_periods), ")");
+    const IniFile::Entry* period = ini.find("EMCMOT", "SERVO_PERIOD");
+    if (period && f.delay() <= max_window_periods * 0.001) fail(ini, *period, cat(text, ": the servo period is too short"));
+    if (modes) fail(ini, *modes, text);
+    // The longest stage, and the key it comes from: given, or derived from an axis' limits.
+    const std::array<double, max_stages> t = limit_filter_times(m.limits, m.given_times);
+    std::size_t longest = 0;
+    for (std::size_t i = 1; i < static_cast<std::size_t>(m.stages); ++i)
+        if (t[i] > t[longest]) longest = i;
+    const std::string stage = cat("T", std::to_string(longest + 1));
+    if (longest < m.given_times.size() && m.given_times[longest] > 0.0)
+        fail(ini, *ini.find("FIRTP", stage), text);
+    const bool velocity_over_acceleration = longest == 0;  // T1 = v / a, T2 = a / j
+    double AxisLimits::*num = velocity_over_acceleration ? &AxisLimits::max_velocity : &AxisLimits::max_acceleration;
+    double AxisLimits::*den = velocity_over_acceleration ? &AxisLimits::max_acceleration : &AxisLimits::max_jerk;
+    for (int a = 0; a < m.limits.axes; ++a) {
+        const AxisLimits& l = m.limits.axis[static_cast<std::size_t>(a)];
+        if (!(l.*num > 0.0 && l.*den > 0.0 && l.*num / l.*den == t[longest])) continue;
+        const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
+        const char* den_key = velocity_over_acceleration ? "MAX_ACCELERATION" : "MAX_JERK";
+        const char* num_key = velocity_over_acceleration ? "MAX_VELOCITY" : "MAX_ACCELERATION";
+        const std::string why = cat(text, ": ", stage, " = ", num_key, " / ", den_key, " = ", short_number(t[longest]), " s");
+        if (const IniFile::Entry* e = ini.find(section, den_key)) fail(ini, *e, why);
+        if (const IniFile::Entry* e = ini.find(section, num_key)) fail(ini, *e, why);
+        at_file(cat("[", section, "]", den_key, ": ", why));
+    }
+    at_file(text);
 }
 
 void check_override(const std::optional<double>& value, const char* flag, const char* what) {
@@ -159,6 +230,7 @@ MachineConfig load_machine(const IniFile& ini) {
     read_period(ini, m);
     read_axes(ini, m);
     read_firtp(ini, m);
+    check_filters(ini, m);
     return m;
 }
 

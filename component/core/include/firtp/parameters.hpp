@@ -71,4 +71,13 @@ std::array<double, max_stages> limit_filter_times(const MachineLimits& limits, s
 // Checks T1 >= ... >= Tn > 0, 1 <= n <= 4, finite; returns an empty string or the reason.
 const char* validate(const FilterTimes& filters);
 
+// The longest filter delay a planner is built for, in servo periods: the planner keeps the samples
+// of one filter window (Td / period of them), so its memory and the time to plan a block grow
+// with it. 20,000 periods are 20 s at 1 ms (the paper's machine needs 237).
+constexpr double max_window_periods = 20000.0;
+
+// Checks a positive, finite period and Td / period <= max_window_periods; returns an empty string
+// or the reason.
+const char* validate_window(const FilterTimes& filters, double period);
+
 }  // namespace firtp

@@ -1,0 +1,99 @@
+// Bad machine configurations are refused when the INI is loaded, with file:line and the key:
+// filter times that cannot be built (a stage neither given nor derivable, untunable modes, a
+// window too long for the planner) and limit keys that are misspelt. The per-value checks (zero,
+// negative, NaN, not a number, unknown [FIRTP] keys) are in machine_test.cpp.
+#include <component_core.hpp>
+#include <firtp/machine.hpp>
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+using firtp::ConfigError;
+using firtp::IniFile;
+
+std::string load_error(const std::string& text) {
+    try {
+        firtp::load_machine(IniFile::parse(text, "mill.ini"));
+    } catch (const ConfigError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+// A jerk limit of 1 gives T2 = a / j = 5000 s: before, this INI loaded and building its planner
+// tried to allocate a 5-million-sample window (found by tests/fuzz/fuzz_ini as an out-of-memory).
+TEST(MachineRefusals, FilterWindowTooLongNamesTheLimitThatMakesIt) {
+    EXPECT_EQ(load_error("[AXIS_X]\nMAX_VELOCITY = 300\nMAX_JERK = 1\n"),
+              "mill.ini:3: [AXIS_X]MAX_JERK: the filter delay T1 + ... + Tn = 5000.06 s is 5.00006e+06 servo periods "
+              "(at most 20000): T2 = MAX_ACCELERATION / MAX_JERK = 5000 s");
+    EXPECT_EQ(load_error("[AXIS_Y]\nMAX_VELOCITY = 30000\nMAX_ACCELERATION = 1\n"),
+              "mill.ini:3: [AXIS_Y]MAX_ACCELERATION: the filter delay T1 + ... + Tn = 30000 s is 3e+07 servo periods "
+              "(at most 20000): T1 = MAX_VELOCITY / MAX_ACCELERATION = 30000 s");
+    EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 3\nT3 = 25\n"),
+              "mill.ini:3: [FIRTP]T3: the filter delay T1 + ... + Tn = 25.11 s is 25110 servo periods (at most 20000)");
+    EXPECT_EQ(load_error("[EMCMOT]\nSERVO_PERIOD = 1000\n"),
+              "mill.ini:2: [EMCMOT]SERVO_PERIOD: the filter delay T1 + ... + Tn = 0.11 s is 110000 servo periods "
+              "(at most 20000): the servo period is too short");
+    EXPECT_EQ(load_error("[FIRTP]\nMODES = 0.001\n"),
+              "mill.ini:2: [FIRTP]MODES: the filter delay T1 + ... + Tn = 1000.05 s is 1.00005e+06 servo periods (at most "
+              "20000)");
+    // Long but within the window: accepted (20 s at 1 ms).
+    EXPECT_EQ(load_error("[FIRTP]\nT1 = 10\nT2 = 9.9\n"), "no error");
+}
+
+TEST(MachineRefusals, StageNeitherGivenNorDerivableNamesStages) {
+    const std::string no_jerk = "[AXIS_X]\nMAX_JERK = 0\n[AXIS_Y]\nMAX_JERK = 0\n[AXIS_Z]\nMAX_JERK = 0\n";
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 2\n"),
+              "mill.ini:8: [FIRTP]STAGES: filter times: T2 is neither given nor derivable from the axis limits or a mode");
+    EXPECT_EQ(load_error(no_jerk), "mill.ini:0: filter times: T2 is neither given nor derivable from the axis limits or a mode");
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 1\n"), "no error");
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nT2 = 0.02\n"), "no error");
+}
+
+TEST(MachineRefusals, UntunableModesNameModes) {
+    const std::string error = load_error("[FIRTP]\nMODES = 5 6 7\nROBUST = double\n");
+    EXPECT_EQ(error.rfind("mill.ini:2: [FIRTP]MODES: filter times: ", 0), 0u) << error;
+}
+
+// A misspelt limit would leave the built-in one (5000 mm/s^2) in force without a word.
+TEST(MachineRefusals, MisspeltLimitKeysAreRefused) {
+    const char* known = "unknown limit key (firtp reads MAX_VELOCITY, MAX_ACCELERATION, MAX_JERK; keys are case sensitive)";
+    EXPECT_EQ(load_error("[AXIS_X]\nMAX_VELOCITY = 100\nMAX_ACCELLERATION = 500\n"),
+              std::string("mill.ini:3: [AXIS_X]MAX_ACCELLERATION: ") + known);
+    EXPECT_EQ(load_error("[AXIS_Z]\nmax_jerk = 1000\n"), std::string("mill.ini:2: [AXIS_Z]max_jerk: ") + known);
+    EXPECT_EQ(load_error("[AXIS_B]\nMAXVELOCITY = 10\n"), std::string("mill.ini:2: [AXIS_B]MAXVELOCITY: ") + known);
+    // LinuxCNC's own axis keys stay allowed.
+    EXPECT_EQ(load_error("[AXIS_X]\nMIN_LIMIT = -10\nMAX_LIMIT = 10\nMAX_VELOCITY = 100\nFERROR = 1\n"), "no error");
+}
+
+// Whatever load_machine accepts, the component accepts (what firtp run and serve load).
+TEST(MachineRefusals, AcceptedMachinesBuildTheComponent) {
+    for (const char* text : {"[FIRTP]\nT1 = 10\nT2 = 9.9\n", "[EMCMOT]\nSERVO_PERIOD = 100000\n",
+                             "[AXIS_X]\nMAX_JERK = 500\n", "[FIRTP]\nMODES = 6.8 11.4\n"}) {
+        const firtp::MachineConfig m = firtp::load_machine(IniFile::parse(text, "m.ini"));
+        firtp::ComponentSettings s;
+        s.planner = m.planner_parameters();
+        s.queue = 8;
+        EXPECT_NO_THROW(firtp::ComponentCore core(s)) << text;
+    }
+}
+
+// The component refuses a window too long for it (module parameters, settings made in code).
+TEST(MachineRefusals, ComponentRefusesAWindowTooLong) {
+    firtp::ComponentSettings s;
+    s.planner.filters.stages = 2;
+    s.planner.filters.T = {15.0, 10.0, 0.0, 0.0};
+    s.queue = 8;
+    try {
+        firtp::ComponentCore core(s);
+        FAIL() << "accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "the filter delay T1 + ... + Tn is longer than 20000 servo periods (20 s at 1 ms)");
+    }
+}
+
+}  // namespace
