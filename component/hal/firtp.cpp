@@ -20,11 +20,15 @@
 #include "hal_pin_access.hpp"
 #include "stream_records.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <new>
+#include <stdexcept>
+#include <string>
 
 MODULE_AUTHOR("firtp");
 MODULE_DESCRIPTION("FIR-filter kinematic corner smoothing trajectory planner (Sencer et al. 2015)");
@@ -180,14 +184,38 @@ void update(void*, long) {
     pin::set(pins->state_overruns, state_overruns);
 }
 
-double number(const char* text, double fallback) { return text && *text ? std::strtod(text, nullptr) : fallback; }
+// Module parameters are checked at load, and a bad one refuses the load naming it (init only:
+// these throw std::invalid_argument, caught in rtapi_app_main).
+[[noreturn]] void refuse(const char* name, const char* text, const std::string& why) {
+    throw std::invalid_argument(std::string(name) + (text && *text ? std::string("=") + text : std::string()) + ": " + why);
+}
 
-// "a,b,c" into field `limit` of the first axes (init only).
-void read_limits(const char* text, double firtp::AxisLimits::*limit, firtp::MachineLimits& limits) {
-    for (int a = 0; text && *text && a < firtp::max_axes; ++a) {
+// A number parameter: absent or empty gives `fallback`; otherwise the whole text must be a finite
+// number (strtod alone would read "0.1x" as 0.1 and "abc" as 0).
+double number(const char* name, const char* text, double fallback) {
+    if (text == nullptr || *text == '\0') return fallback;
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !std::isfinite(value)) refuse(name, text, "not a finite number");
+    return value;
+}
+
+// "a,b,c" into field `limit` of the first axes: each a finite number >= 0 (0: not limited).
+void read_limits(const char* name, const char* text, double firtp::AxisLimits::*limit, firtp::MachineLimits& limits) {
+    if (text == nullptr || *text == '\0') return;
+    const std::string list = text;
+    std::size_t begin = 0;
+    for (int a = 0;; ++a) {
+        const std::size_t comma = std::min(list.find(',', begin), list.size());
+        if (a >= axes) refuse(name, text, "more values than axes=" + std::to_string(axes));
+        const std::string item = list.substr(begin, comma - begin);
         char* end = nullptr;
-        limits.axis[a].*limit = std::strtod(text, &end);
-        text = *end == ',' ? end + 1 : end;
+        const double value = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(value)) refuse(name, text, "'" + item + "' is not a finite number");
+        if (value < 0.0) refuse(name, text, "'" + item + "' must be zero (no limit) or positive");
+        limits.axis[a].*limit = value;
+        if (comma == list.size()) break;
+        begin = comma + 1;
     }
 }
 
@@ -236,24 +264,44 @@ int make_pins() {
 
 firtp::ComponentSettings settings_from_parameters() {
     firtp::ComponentSettings s;
+    const std::string stages_text = std::to_string(stages);
+    if (stages < 1 || stages > firtp::max_stages) refuse("stages", stages_text.c_str(), "must be 1 to 4");
     s.planner.filters.stages = stages;
+    const char* names[] = {"t1", "t2", "t3", "t4"};
     const char* times[] = {t1, t2, t3, t4};
-    for (int i = 0; i < firtp::max_stages; ++i) s.planner.filters.T[i] = number(times[i], 0.0);
+    for (int i = 0; i < firtp::max_stages; ++i) {
+        s.planner.filters.T[i] = number(names[i], times[i], 0.0);
+        if (i < stages && !(s.planner.filters.T[i] > 0.0))
+            refuse(names[i], times[i], "stages=" + stages_text + " needs a positive time in seconds");
+    }
+    if (const char* why = firtp::validate(s.planner.filters); *why) refuse("t1..t4", "", why);
+    const std::string period_text = std::to_string(period_ns);
+    if (period_ns <= 0) refuse("period_ns", period_text.c_str(), "must be positive");
     s.planner.period = static_cast<double>(period_ns) * 1e-9;
+    if (const char* why = firtp::validate_window(s.planner.filters, s.planner.period); *why)
+        refuse("t1..t4 and period_ns", period_text.c_str(), why);
     s.planner.tolerance_meaning = meaning && std::strcmp(meaning, "contour") == 0 ? firtp::ToleranceMeaning::contour
                                                                                  : firtp::ToleranceMeaning::corner_point;
     s.planner.limits.axes = axes;
-    read_limits(max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
-    read_limits(max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
-    read_limits(max_jerk, &firtp::AxisLimits::max_jerk, s.planner.limits);
+    read_limits("max_velocity", max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
+    read_limits("max_acceleration", max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
+    read_limits("max_jerk", max_jerk, &firtp::AxisLimits::max_jerk, s.planner.limits);
     s.axes = axes;
-    s.queue = queue > 0 ? static_cast<std::size_t>(queue) : 0;
+    if (queue < 2) refuse("queue", std::to_string(queue).c_str(), "must be at least 2");
+    s.queue = static_cast<std::size_t>(queue);
+    if (max_blocks < 1) refuse("max_blocks", std::to_string(max_blocks).c_str(), "must be at least 1");
     s.max_blocks_per_period = max_blocks;
+    if (plan_budget_us < 0) refuse("plan_budget_us", std::to_string(plan_budget_us).c_str(), "must be 0 (none) or positive");
     s.plan_budget_ns = static_cast<std::int64_t>(plan_budget_us) * 1000;
+    if (stream_depth < 2) refuse("stream_depth", std::to_string(stream_depth).c_str(), "must be at least 2");
     s.clock_ns = [] { return static_cast<std::int64_t>(rtapi_get_time()); };
-    s.default_tolerance = number(tolerance, 0.05);
-    s.planner.max_rate = number(max_feed_override, 1.0);
-    s.planner.rate_reserve = number(rate_reserve, 0.2);
+    s.default_tolerance = number("tolerance", tolerance, 0.05);
+    if (!(s.default_tolerance > 0.0)) refuse("tolerance", tolerance, "must be positive");
+    s.planner.max_rate = number("max_feed_override", max_feed_override, 1.0);
+    if (!(s.planner.max_rate >= 1.0)) refuse("max_feed_override", max_feed_override, "must be at least 1 (100 %)");
+    s.planner.rate_reserve = number("rate_reserve", rate_reserve, 0.2);
+    if (!(s.planner.rate_reserve > 0.0 && s.planner.rate_reserve < 1.0))
+        refuse("rate_reserve", rate_reserve, "must lie between 0 and 1 (a share of the acceleration and jerk limits)");
     return s;
 }
 
@@ -269,9 +317,9 @@ int fail(const char* what) {
 extern "C" int rtapi_app_main(void) {
     comp_id = hal_init("firtp");
     if (comp_id < 0) return comp_id;
-    if (axes < 1 || axes > firtp::max_axes) return fail("axes must be 1 to 9");
+    if (axes < 1 || axes > firtp::max_axes) return fail(("axes=" + std::to_string(axes) + ": must be 1 to 9").c_str());
     if (meaning && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
-        return fail("meaning must be corner or contour");
+        return fail((std::string("meaning=") + meaning + ": must be corner or contour").c_str());
     try {
         core = new firtp::ComponentCore(settings_from_parameters());  // init only, never in the servo thread
     } catch (const std::exception& e) {

@@ -40,6 +40,47 @@ std::string load(const std::vector<std::string>& args) {
 
 }  // namespace
 
+TEST(ModuleParams, BadValuesAreRefusedNamingTheParameter) {
+    const std::vector<std::string> base = {"t1=0.06", "t2=0.05"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = base;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return load(args);
+    };
+    EXPECT_EQ(with({}), "loaded");
+    EXPECT_EQ(with({"t1=abc"}), "firtp: t1=abc: not a finite number\n");
+    EXPECT_EQ(with({"t1=0.1x"}), "firtp: t1=0.1x: not a finite number\n");
+    EXPECT_EQ(with({"t2=nan"}), "firtp: t2=nan: not a finite number\n");
+    EXPECT_EQ(with({"t2=0"}), "firtp: t2=0: stages=2 needs a positive time in seconds\n");
+    EXPECT_EQ(with({"t2=-0.05"}), "firtp: t2=-0.05: stages=2 needs a positive time in seconds\n");
+    EXPECT_EQ(with({"stages=3"}), "firtp: t3: stages=3 needs a positive time in seconds\n");
+    EXPECT_EQ(with({"stages=5"}), "firtp: stages=5: must be 1 to 4\n");
+    EXPECT_EQ(with({"t1=0.01", "t2=0.05"}), "firtp: t1..t4: filter times must not increase (T1 >= T2 >= ...)\n");
+    EXPECT_EQ(with({"period_ns=0"}), "firtp: period_ns=0: must be positive\n");
+    EXPECT_EQ(with({"t1=15", "t2=10"}),
+              "firtp: t1..t4 and period_ns=1000000: the filter delay T1 + ... + Tn is longer than 20000 servo periods "
+              "(20 s at 1 ms)\n");
+    EXPECT_EQ(with({"period_ns=1000"}),
+              "firtp: t1..t4 and period_ns=1000: the filter delay T1 + ... + Tn is longer than 20000 servo periods "
+              "(20 s at 1 ms)\n");
+    EXPECT_EQ(with({"max_velocity=300,x,300"}), "firtp: max_velocity=300,x,300: 'x' is not a finite number\n");
+    EXPECT_EQ(with({"max_acceleration=5000,-1"}),
+              "firtp: max_acceleration=5000,-1: '-1' must be zero (no limit) or positive\n");
+    EXPECT_EQ(with({"max_jerk=1,2,3,4"}), "firtp: max_jerk=1,2,3,4: more values than axes=3\n");
+    EXPECT_EQ(with({"max_jerk=1e5,,1e5"}), "firtp: max_jerk=1e5,,1e5: '' is not a finite number\n");
+    EXPECT_EQ(with({"tolerance=0"}), "firtp: tolerance=0: must be positive\n");
+    EXPECT_EQ(with({"tolerance=-0.05"}), "firtp: tolerance=-0.05: must be positive\n");
+    EXPECT_EQ(with({"max_feed_override=0.5"}), "firtp: max_feed_override=0.5: must be at least 1 (100 %)\n");
+    EXPECT_EQ(with({"rate_reserve=1"}),
+              "firtp: rate_reserve=1: must lie between 0 and 1 (a share of the acceleration and jerk limits)\n");
+    EXPECT_EQ(with({"queue=1"}), "firtp: queue=1: must be at least 2\n");
+    EXPECT_EQ(with({"max_blocks=0"}), "firtp: max_blocks=0: must be at least 1\n");
+    EXPECT_EQ(with({"plan_budget_us=-1"}), "firtp: plan_budget_us=-1: must be 0 (none) or positive\n");
+    EXPECT_EQ(with({"axes=10"}), "firtp: axes=10: must be 1 to 9\n");
+    EXPECT_EQ(with({"meaning=max"}), "firtp: meaning=max: must be corner or contour\n");
+    EXPECT_EQ(with({"max_velocity=300,300,300", "max_acceleration=5000,5000,5000", "max_jerk=1e5,1e5,0"}), "loaded");
+}
+
 // A reload starts from the parameters' defaults. firtp.so stays mapped after dlclose (a C++ module
 // with unique symbols cannot be unloaded), so its statics kept the last load's values: t3 kept a
 // pointer into the string hal-shim had freed at unloadrt, and the next load without t3 read it
