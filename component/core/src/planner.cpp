@@ -11,6 +11,7 @@ namespace firtp {
 namespace {
 
 constexpr double collinear_angle = 1e-9;  // rad: joined into one pulse below this turn
+constexpr double max_pulse_periods = 1e16;  // longest pulse Tv = L / F, in servo periods (int64 ticks reach 9.2e18)
 
 bool finite(const AxisVector& v) { return v.allFinite(); }
 
@@ -140,6 +141,9 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
     const AxisVector delta = block.target - last_.end;
     const double length = delta.norm();
     if (length < min_block_length) return Result::ok;
+    // The pulse must fit the servo clock (int64 ticks): a feed of 1e-300, or a length that
+    // overflows, gives Tv = inf, which would be converted to a tick count (undefined behaviour).
+    if (!(length / block.feed <= max_pulse_periods * parameters_.period)) return Result::invalid_block;
     if (out.free() == 0) return Result::queue_full;
 
     const double period = parameters_.period;
