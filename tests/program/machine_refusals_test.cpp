@@ -41,6 +41,15 @@ TEST(MachineRefusals, FilterWindowTooLongNamesTheLimitThatMakesIt) {
     EXPECT_EQ(load_error("[FIRTP]\nMODES = 0.001\n"),
               "mill.ini:2: [FIRTP]MODES: the filter delay T1 + ... + Tn = 1000.05 s is 1.00005e+06 servo periods (at most "
               "20000)");
+    // With modes, a bound longer than the window is refused before tuning, and a frequency that would
+    // put more than a million of its periods in a stage (fuzz_ini: MODES = 888888888888884 Hz made
+    // the tuner convert 4e13 to an int, undefined behaviour).
+    EXPECT_EQ(load_error("[AXIS_X]\nMAX_JERK = 1\n[FIRTP]\nMODES = 10\n"),
+              "mill.ini:2: [AXIS_X]MAX_JERK: the filter delay T1 + ... + Tn is at least 5000 s is 5e+06 servo periods "
+              "(at most 20000): T2 = MAX_ACCELERATION / MAX_JERK = 5000 s");
+    EXPECT_EQ(load_error("[FIRTP]\nMODES = 888888888888884/0.3\nROBUST = straddle 0.2\n"),
+              "mill.ini:2: [FIRTP]MODES: 8.88889e+14 Hz: a filter stage of 0.06 s would span more than a million periods "
+              "of this mode");
     // Long but within the window: accepted (20 s at 1 ms).
     EXPECT_EQ(load_error("[FIRTP]\nT1 = 10\nT2 = 9.9\n"), "no error");
 }

@@ -129,6 +129,48 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
     const IniFile::Entry* modes = ini.find("FIRTP", "MODES");
     const IniFile::Entry* stages = ini.find("FIRTP", "STAGES");
     const auto at_file = [&](const std::string& text) { throw ConfigError(cat(ini.file_name(), ":0: ", text)); };
+    const std::array<double, max_stages> t = limit_filter_times(m.limits, m.given_times);  // untuned, by position
+    const bool tuned = !m.tuning.modes.empty();
+
+    // Refuses a delay longer than the window, naming the key the longest stage comes from.
+    const auto refuse_window = [&](double delay, const char* is, bool blame_modes) {
+        const std::string text = cat("the filter delay T1 + ... + Tn ", is, " ", short_number(delay), " s is ",
+                                     short_number(std::round(delay / m.period)), " servo periods (at most ",
+                                     short_number(max_window_periods), ")");
+        const IniFile::Entry* period = ini.find("EMCMOT", "SERVO_PERIOD");
+        if (period && delay <= max_window_periods * 0.001) fail(ini, *period, cat(text, ": the servo period is too short"));
+        if (blame_modes && modes) fail(ini, *modes, text);  // the tuning made it this long
+        std::size_t longest = 0;  // the longest stage, given or derived from an axis' limits
+        for (std::size_t i = 1; i < static_cast<std::size_t>(tuned ? max_stages : m.stages); ++i)
+            if (t[i] > t[longest]) longest = i;
+        const std::string stage = cat("T", std::to_string(longest + 1));
+        if (longest < m.given_times.size() && m.given_times[longest] > 0.0) fail(ini, *ini.find("FIRTP", stage), text);
+        const bool velocity_over_acceleration = longest == 0;  // T1 = v / a, T2 = a / j
+        double AxisLimits::*num = velocity_over_acceleration ? &AxisLimits::max_velocity : &AxisLimits::max_acceleration;
+        double AxisLimits::*den = velocity_over_acceleration ? &AxisLimits::max_acceleration : &AxisLimits::max_jerk;
+        for (int a = 0; a < m.limits.axes && t[longest] > 0.0; ++a) {
+            const AxisLimits& l = m.limits.axis[static_cast<std::size_t>(a)];
+            if (!(l.*num > 0.0 && l.*den > 0.0 && l.*num / l.*den == t[longest])) continue;
+            const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
+            const char* den_key = velocity_over_acceleration ? "MAX_ACCELERATION" : "MAX_JERK";
+            const char* num_key = velocity_over_acceleration ? "MAX_VELOCITY" : "MAX_ACCELERATION";
+            const std::string why = cat(text, ": ", stage, " = ", num_key, " / ", den_key, " = ", short_number(t[longest]), " s");
+            if (const IniFile::Entry* e = ini.find(section, den_key)) fail(ini, *e, why);
+            if (const IniFile::Entry* e = ini.find(section, num_key)) fail(ini, *e, why);
+            at_file(cat("[", section, "]", den_key, ": ", why));
+        }
+        if (modes) fail(ini, *modes, text);
+        at_file(text);
+    };
+
+    if (tuned) {  // before tuning: its stage times are whole numbers of mode periods above these bounds
+        const double bound = *std::max_element(t.begin(), t.end());
+        if (!(bound <= max_window_periods * m.period)) refuse_window(bound, "is at least", false);
+        for (const StructuralMode& mode : m.tuning.modes)  // straddled zeros sit up to 1.5 f
+            if (!(mode.frequency_hz * 1.5 * bound <= 1e6))
+                fail(ini, *modes, cat(short_number(mode.frequency_hz), " Hz: a filter stage of ", short_number(bound),
+                                      " s would span more than a million periods of this mode"));
+    }
     FilterTimes f;
     try {
         f = m.filter_times();
@@ -137,37 +179,7 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
         if (stages) fail(ini, *stages, e.what());
         at_file(e.what());
     }
-    if (*validate_window(f, m.period) == '\0') return;
-
-    const std::string text = cat("the filter delay T1 + ... + Tn = ", short_number(f.delay()), " s is ",
-                                 short_number(std::round(f.delay() / m.period)), " servo periods (at most ",
-                                 short_number(max_window_periods), ")");
-    const IniFile::Entry* period = ini.find("EMCMOT", "SERVO_PERIOD");
-    if (period && f.delay() <= max_window_periods * 0.001) fail(ini, *period, cat(text, ": the servo period is too short"));
-    if (modes) fail(ini, *modes, text);
-    // The longest stage, and the key it comes from: given, or derived from an axis' limits.
-    const std::array<double, max_stages> t = limit_filter_times(m.limits, m.given_times);
-    std::size_t longest = 0;
-    for (std::size_t i = 1; i < static_cast<std::size_t>(m.stages); ++i)
-        if (t[i] > t[longest]) longest = i;
-    const std::string stage = cat("T", std::to_string(longest + 1));
-    if (longest < m.given_times.size() && m.given_times[longest] > 0.0)
-        fail(ini, *ini.find("FIRTP", stage), text);
-    const bool velocity_over_acceleration = longest == 0;  // T1 = v / a, T2 = a / j
-    double AxisLimits::*num = velocity_over_acceleration ? &AxisLimits::max_velocity : &AxisLimits::max_acceleration;
-    double AxisLimits::*den = velocity_over_acceleration ? &AxisLimits::max_acceleration : &AxisLimits::max_jerk;
-    for (int a = 0; a < m.limits.axes; ++a) {
-        const AxisLimits& l = m.limits.axis[static_cast<std::size_t>(a)];
-        if (!(l.*num > 0.0 && l.*den > 0.0 && l.*num / l.*den == t[longest])) continue;
-        const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
-        const char* den_key = velocity_over_acceleration ? "MAX_ACCELERATION" : "MAX_JERK";
-        const char* num_key = velocity_over_acceleration ? "MAX_VELOCITY" : "MAX_ACCELERATION";
-        const std::string why = cat(text, ": ", stage, " = ", num_key, " / ", den_key, " = ", short_number(t[longest]), " s");
-        if (const IniFile::Entry* e = ini.find(section, den_key)) fail(ini, *e, why);
-        if (const IniFile::Entry* e = ini.find(section, num_key)) fail(ini, *e, why);
-        at_file(cat("[", section, "]", den_key, ": ", why));
-    }
-    at_file(text);
+    if (*validate_window(f, m.period) != '\0') refuse_window(f.delay(), "=", tuned);
 }
 
 void check_override(const std::optional<double>& value, const char* flag, const char* what) {
