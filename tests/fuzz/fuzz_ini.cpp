@@ -1,0 +1,56 @@
+// libFuzzer target: the INI reader and the machine it describes (IniFile::parse, load_machine).
+// Any input either gives a ConfigError or a machine the planner and the component accept: valid
+// filter times, rate settings, a positive period, finite limits; ComponentCore takes it.
+#include <component_core.hpp>
+#include <firtp/fir_chain.hpp>
+#include <firtp/ini.hpp>
+#include <firtp/machine.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string_view>
+
+// A property that must hold: abort (libFuzzer saves the input) naming it.
+#define require(condition)                                                                  \
+    do {                                                                                  \
+        if (!(condition)) {                                                               \
+            std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
+            std::abort();                                                                 \
+        }                                                                                 \
+    } while (false)
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    firtp::MachineConfig m;
+    try {
+        m = firtp::load_machine(firtp::IniFile::parse(text, "fuzz.ini"));
+    } catch (const firtp::ConfigError&) {
+        return 0;  // refused with file:line: [SECTION]KEY: reason
+    }
+    const firtp::PlannerParameters p = m.planner_parameters();
+    require(*firtp::validate(p.filters) == '\0');
+    require(*firtp::validate_rate(p) == '\0');
+    require(std::isfinite(p.period) && p.period > 0.0);
+    require(m.default_tolerance > 0.0 && m.arc_chord_tolerance > 0.0);
+    require(p.limits.axes >= 1 && p.limits.axes <= firtp::max_axes);
+    for (int a = 0; a < p.limits.axes; ++a) {
+        const firtp::AxisLimits& l = p.limits.axis[a];
+        require(std::isfinite(l.max_velocity) && l.max_velocity >= 0.0);
+        require(std::isfinite(l.max_acceleration) && l.max_acceleration >= 0.0);
+        require(std::isfinite(l.max_jerk) && l.max_jerk >= 0.0);
+    }
+    firtp::ComponentSettings s;
+    s.planner = p;
+    s.axes = p.limits.axes;
+    s.queue = 4;
+    s.default_tolerance = m.default_tolerance;
+    try {
+        firtp::ComponentCore core(s);  // what firtp run / serve load with this INI
+    } catch (const std::invalid_argument&) {
+        std::abort();  // the INI reader accepted a machine the component refuses
+    }
+    return 0;
+}
