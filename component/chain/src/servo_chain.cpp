@@ -40,6 +40,7 @@ std::vector<std::string> module_arguments(const MachineConfig& machine, const Ch
         cat("queue=", std::to_string(settings.queue)),
         cat("max_blocks=", std::to_string(settings.max_blocks)),
         cat("plan_budget_us=", std::to_string(settings.plan_budget_us)),
+        cat("stream_depth=", std::to_string(settings.stream_depth)),
         cat("max_feed_override=", number_text(p.max_rate)),
         cat("rate_reserve=", number_text(p.rate_reserve)),
     };

@@ -18,6 +18,7 @@ struct ChainSettings {
     int queue = 1024;      // blocks the component holds
     int max_blocks = 32;   // stream blocks planned per servo period at most
     int plan_budget_us = 0;  // and only within this planning time (0: no limit, for stepped runs)
+    int stream_depth = 4096; // records the block stream holds: with queue, how far ahead a host may send
 };
 
 class ServoChain {

@@ -1,0 +1,322 @@
+// Faults between the host and the component, through the real chain (firtp host's Host, LCM,
+// firtp-bridge, firtp.so under hal-shim), deterministic: each side has its own memq:// LCM and a
+// relay between them drops, duplicates, delays (so reorders) and corrupts messages, stepped one
+// servo period at a time with a clock that advances one period per step. Also: the host dying
+// mid-program and a restarted host resuming it, and the component restarting under a running host.
+//
+// Measured on the component's own axis states (every period, not through the faulty link): every
+// block is forwarded to the component exactly once (bridge count, status next_seq), the machine
+// ends exactly on the last target, velocity and acceleration stay within the axis limits at every
+// sample (a stop for want of blocks included), and every corner is within its tolerance.
+#include "chain_fixture.hpp"
+
+#include <firtp/host.hpp>
+#include <firtp/measure.hpp>
+#include <firtp/recorded_states.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace firtp;
+
+namespace {
+
+struct Faults {
+    double drop = 0.0, duplicate = 0.0, corrupt = 0.0;
+    int max_delay = 0;  // periods; a random delay per message reorders them
+    int min_delay = 0;
+};
+
+// One direction of the network: messages on `from` matching `channels` reach `to` after the
+// faults; pump(now) delivers what is due.
+class Link {
+public:
+    Link(lcm::LCM& from, lcm::LCM& to, const std::string& channels, Faults faults, std::uint64_t seed)
+        : to_(&to), faults_(faults), rng_(seed) {
+        messages::keep_everything(from.subscribe(channels, &Link::on_message, this));
+    }
+    void pump(std::int64_t now) {
+        std::stable_sort(queue_.begin(), queue_.end(), [](const Pending& a, const Pending& b) { return a.due < b.due; });
+        std::size_t n = 0;
+        while (n < queue_.size() && queue_[n].due <= now) {
+            to_->publish(queue_[n].channel, queue_[n].bytes.data(), static_cast<unsigned>(queue_[n].bytes.size()));
+            ++delivered;
+            ++n;
+        }
+        queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(n));
+    }
+    void set_faults(const Faults& f) { faults_ = f; }
+    void set_now(std::int64_t now) { now_ = now; }
+
+    std::int64_t delivered = 0, dropped = 0, duplicated = 0, corrupted = 0, delayed = 0;
+
+private:
+    struct Pending {
+        std::int64_t due;
+        std::string channel;
+        std::vector<std::uint8_t> bytes;
+    };
+    double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
+    void on_message(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+        std::vector<std::uint8_t> bytes(static_cast<const std::uint8_t*>(buffer->data),
+                                        static_cast<const std::uint8_t*>(buffer->data) + buffer->data_size);
+        if (unit() < faults_.drop) {
+            ++dropped;
+            return;
+        }
+        if (unit() < faults_.corrupt) {  // the kinds LCM can notice: a damaged type hash, a short message
+            ++corrupted;
+            if (unit() < 0.5 && bytes.size() > 8) bytes[static_cast<std::size_t>(unit() * 8)] ^= 0x5a;
+            else bytes.resize(static_cast<std::size_t>(unit() * static_cast<double>(bytes.size())));
+        }
+        const int copies = unit() < faults_.duplicate ? 2 : 1;
+        duplicated += copies - 1;
+        for (int c = 0; c < copies; ++c) {
+            const auto delay =
+                faults_.min_delay + static_cast<std::int64_t>(unit() * (faults_.max_delay - faults_.min_delay + 1));
+            delayed += delay > 0;
+            queue_.push_back({now_ + delay, channel, bytes});
+        }
+    }
+
+    lcm::LCM* to_;
+    Faults faults_;
+    std::mt19937_64 rng_;
+    std::int64_t now_ = 0;
+    std::vector<Pending> queue_;
+};
+
+// Random moves in X Y Z, 0.3-25 mm, 20-250 mm/s, tolerance 0.01-0.1 mm, absolute targets; or
+// (short_moves) a curve of 0.3-2 mm chords turning gently, at 150-250 mm/s (a block every few ms).
+Program random_program(std::uint64_t seed, int blocks, bool short_moves = false) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Program p;
+    p.file = "faults.ngc";
+    AxisVector at = AxisVector::Zero(), heading = AxisVector::Unit(0);
+    for (int i = 0; i < blocks; ++i) {
+        Block b;
+        const double length = short_moves ? 0.3 + 1.7 * unit(rng) : unit(rng) < 0.3 ? 0.3 + unit(rng) : 5.0 + 20.0 * unit(rng);
+        AxisVector d = AxisVector::Zero();
+        for (int a = 0; a < 3; ++a) d[a] = unit(rng) - 0.5;
+        if (short_moves) d = heading + 0.1 * d;
+        heading = d.normalized();
+        b.target = at + heading * length;
+        b.feed = short_moves ? 150 + 100 * unit(rng) : 20 + 230 * unit(rng);
+        b.tolerance = 0.01 + 0.09 * unit(rng);
+        b.termination = unit(rng) < 0.05 ? Termination::exact_stop : Termination::blend;
+        b.line = 10 + i;
+        p.blocks.push_back(b);
+        at = b.target;
+    }
+    return p;
+}
+
+// The component side on its LCM, the host on another, relays between them; one period per step.
+struct Network {
+    MachineConfig machine = default_machine();
+    std::unique_ptr<lcm::LCM> host_lcm = messages::open("memq://");
+    std::unique_ptr<lcm::LCM> component_lcm = messages::open("memq://");
+    std::unique_ptr<ServoChain> chain;
+    Link to_component, to_host;
+    std::vector<firtp_lcm::axis_state_t> states;  // the component's, every period (not through the link)
+    std::vector<firtp_lcm::status_t> statuses;    // the component's, as sent
+    std::int64_t now = 0;
+
+    // A component that holds 16 blocks and a stream of 16: the host can be about 30 blocks ahead,
+    // so a program of 60 or more is still being sent while it runs.
+    static ChainSettings small() {
+        ChainSettings s;
+        s.queue = 16;
+        s.stream_depth = 16;
+        return s;
+    }
+
+    Network(Faults down, Faults up, std::uint64_t seed)
+        : chain(std::make_unique<ServoChain>(*component_lcm, machine, default_module_path(), small())),
+          to_component(*host_lcm, *component_lcm, "FIRTP_BLOCK|FIRTP_CONTROL", down, seed),
+          to_host(*component_lcm, *host_lcm, "FIRTP_STATUS", up, seed + 1) {
+        messages::keep_everything(component_lcm->subscribe(messages::axis_state_channel, &Network::on_state, this));
+        messages::keep_everything(component_lcm->subscribe(messages::status_channel, &Network::on_status, this));
+    }
+    void on_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* m) { states.push_back(*m); }
+    void on_status(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::status_t* m) { statuses.push_back(*m); }
+
+    host::HostOptions options(std::int64_t program_id) {
+        host::HostOptions o;
+        o.program_id = program_id;
+        o.clock = [this] { return host::Clock::time_point(std::chrono::milliseconds(now)); };
+        return o;
+    }
+    // One period: the host, the network, the servo thread, the bridge.
+    void step(host::Host* h) {
+        if (h) h->step();
+        to_component.set_now(now);
+        to_host.set_now(now);
+        to_component.pump(now);
+        while (component_lcm->handleTimeout(0) > 0) {
+        }
+        chain->step();
+        chain->poll();
+        while (component_lcm->handleTimeout(0) > 0) {
+        }
+        to_host.pump(now);
+        ++now;
+    }
+    host::Result run(host::Host& h, int max_periods, int hold_from = -1, int hold_to = -1) {
+        for (int k = 0; k < max_periods && h.result() == host::Result::running; ++k) {
+            if (k == hold_from) h.hold(true);
+            if (k == hold_to) h.hold(false);
+            step(&h);
+        }
+        return h.result();
+    }
+    void idle(int periods) {
+        for (int k = 0; k < periods; ++k) step(nullptr);
+    }
+    AxisVector position() const {
+        AxisVector p = AxisVector::Zero();
+        for (int a = 0; a < max_axes; ++a) p[a] = states.back().position[a];
+        return p;
+    }
+};
+
+// |v| / v_max and |a| / a_max at every sample the component produced: at most 1 (+ rounding).
+double worst_limit_ratio(const std::vector<firtp_lcm::axis_state_t>& states, const MachineLimits& l) {
+    double worst = 0.0;
+    for (const auto& s : states)
+        for (int a = 0; a < l.axes; ++a)
+            worst = std::max({worst, std::abs(s.velocity[a]) / l.axis[a].max_velocity,
+                              std::abs(s.acceleration[a]) / l.axis[a].max_acceleration});
+    return worst;
+}
+
+// Corner errors over tolerance, worst, measured on the samples against the program.
+double worst_corner_share(const Network& net, const Program& program) {
+    const std::vector<AxisState> samples = samples_from_axis_states(net.states, net.machine.period);
+    std::vector<AxisVector> points{program.start};
+    for (const Block& b : program.blocks) points.push_back(b.target);
+    const Measured m = measure(samples, points, net.machine.period);
+    double worst = 0.0;
+    for (std::size_t c = 0; c < m.corner_errors.size(); ++c)
+        worst = std::max(worst, m.corner_errors[c] / program.blocks[c].tolerance);
+    return worst;
+}
+
+void expect_exactly_once_and_on_target(const Network& net, const Program& program, std::int64_t program_id) {
+    EXPECT_EQ(net.chain->bridge().blocks_forwarded(), static_cast<std::int64_t>(program.blocks.size()));
+    ASSERT_FALSE(net.statuses.empty());
+    EXPECT_EQ(net.statuses.back().program, program_id);
+    EXPECT_EQ(net.statuses.back().next_seq, static_cast<std::int64_t>(program.blocks.size()) + 1);
+    ASSERT_FALSE(net.states.empty());
+    const AxisVector end = net.position();
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(end[a], program.blocks.back().target[a], 1e-9);
+    EXPECT_LE(worst_limit_ratio(net.states, net.machine.limits), 1.0 + 1e-6);
+}
+
+}  // namespace
+
+// Blocks, controls and statuses dropped (10 %), duplicated (5 %), delayed up to 30 ms (so
+// reordered) and corrupted (3 %: a damaged type hash or a truncated message, which LCM refuses),
+// with a hold and feed override changes sent over the same link: go-back-N and the republished
+// controls repair it all; nothing runs twice, nothing is skipped, the path keeps its tolerances.
+TEST(LcmFaults, LossyLinkDeliversEveryBlockOnceAndTheMachineStaysOnThePath) {
+    Faults down{0.10, 0.05, 0.03, 30};
+    Faults up{0.10, 0.05, 0.03, 20};
+    Network net(down, up, 11);
+    const Program program = random_program(3, 150);
+    host::Host h(*net.host_lcm, program, net.options(501));
+    EXPECT_EQ(net.run(h, 600000, 3000, 4500), host::Result::done) << h.error();
+    expect_exactly_once_and_on_target(net, program, 501);
+    const double corners = worst_corner_share(net, program);
+    EXPECT_LE(corners, 1.0 + 1e-3);
+    const host::Statistics s = h.statistics();
+    std::printf("lossy link: %lld blocks published for %zu (%lld go-backs), %lld refused by the bridge; down: %lld "
+                "dropped, %lld duplicated, %lld delayed, %lld corrupted; up: %lld dropped, %lld duplicated, %lld "
+                "corrupted; %lld periods; worst corner %.3f of its tolerance; |v|,|a| <= %.4f of the limits\n",
+                static_cast<long long>(s.blocks_published), program.blocks.size(), static_cast<long long>(s.go_backs),
+                static_cast<long long>(s.rejected), static_cast<long long>(net.to_component.dropped),
+                static_cast<long long>(net.to_component.duplicated), static_cast<long long>(net.to_component.delayed),
+                static_cast<long long>(net.to_component.corrupted), static_cast<long long>(net.to_host.dropped),
+                static_cast<long long>(net.to_host.duplicated), static_cast<long long>(net.to_host.corrupted),
+                static_cast<long long>(net.now), corners, worst_limit_ratio(net.states, net.machine.limits));
+    EXPECT_GT(net.to_component.dropped, 10);
+    EXPECT_GT(net.to_component.duplicated, 5);
+    EXPECT_GT(net.to_component.corrupted, 3);
+    EXPECT_GT(net.to_host.dropped, 10);
+    EXPECT_GT(s.go_backs, 3);
+}
+
+// For 3 s in the middle of the program every message to the component (the host's resends too) is
+// delayed by 3 s, longer than the 1.5 s of motion it has queued: the component plans
+// nothing it did not receive, so it comes to rest exactly at the end of the last block it has,
+// within the limits; the host's resends go out, the late copies arrive after them and are refused
+// as repeats, and the program goes on: each block once.
+TEST(LcmFaults, DelayedBlocksStopTheMachineAtTheLastBlockAndItGoesOn) {
+    Network net({}, {}, 21);
+    const Program program = random_program(4, 300, true);  // about 1.5 s of motion
+    host::Host h(*net.host_lcm, program, net.options(601));
+    for (int k = 0; k < 300; ++k) net.step(&h);
+    net.to_component.set_faults({0.0, 0.0, 0.0, 3000, 3000});
+    bool rested = false;  // the machine came to rest on the last block it had while it waited
+    for (int k = 0; k < 6000 && h.result() == host::Result::running; ++k) {
+        if (k == 3000) net.to_component.set_faults({});
+        net.step(&h);
+        const firtp_lcm::status_t& s = net.statuses.back();
+        if (rested || s.state != firtp_lcm::status_t::IDLE || s.queue_depth != 0 || s.next_seq < 2) continue;
+        const AxisVector at = net.position();
+        rested = true;
+        for (int a = 0; a < 3; ++a)
+            EXPECT_EQ(at[a], program.blocks[static_cast<std::size_t>(s.next_seq - 2)].target[a]) << "seq " << s.next_seq - 1;
+    }
+    EXPECT_TRUE(rested);
+    ASSERT_EQ(net.run(h, 600000), host::Result::done) << h.error();
+    expect_exactly_once_and_on_target(net, program, 601);
+    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-3);
+    EXPECT_GT(net.to_component.delayed, 5);
+    std::printf("delayed link: %lld blocks published for %zu, %lld go-backs, %lld refused (late copies)\n",
+                static_cast<long long>(h.statistics().blocks_published), program.blocks.size(),
+                static_cast<long long>(h.statistics().go_backs), static_cast<long long>(h.statistics().rejected));
+}
+
+// The host dies mid-program (it stops sending and never answers again). The component finishes
+// the blocks it has and rests exactly on the last one's end, within the limits. A restarted host
+// with the same program (same id) resumes from the component's next_seq: the blocks already run
+// are not sent again (the component would refuse them as repeats anyway), the rest run once.
+TEST(LcmFaults, HostDiesAndARestartedHostResumesTheProgramExactlyOnce) {
+    Network net({}, {}, 31);
+    const Program program = random_program(5, 120);
+    auto first = std::make_unique<host::Host>(*net.host_lcm, program, net.options(701));
+    for (int k = 0; k < 2500; ++k) net.step(first.get());
+    ASSERT_EQ(first->result(), host::Result::running);
+    const std::int64_t sent = static_cast<std::int64_t>(first->progress().sent);
+    first.reset();  // the host process is gone
+    for (int k = 0; k < 60000 && !(net.statuses.back().state == firtp_lcm::status_t::IDLE && k > 100); ++k) net.idle(1);
+    const firtp_lcm::status_t& rest = net.statuses.back();
+    EXPECT_EQ(rest.state, firtp_lcm::status_t::IDLE);
+    EXPECT_EQ(rest.queue_depth, 0);
+    const std::int64_t ran = rest.next_seq - 1;
+    EXPECT_GT(ran, 10);
+    EXPECT_LT(ran, static_cast<std::int64_t>(program.blocks.size()));
+    EXPECT_LE(ran, sent);
+    const AxisVector at = net.position();
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(at[a], program.blocks[static_cast<std::size_t>(ran - 1)].target[a]);
+    EXPECT_LE(worst_limit_ratio(net.states, net.machine.limits), 1.0 + 1e-6);
+
+    host::Host second(*net.host_lcm, program, net.options(701));
+    EXPECT_EQ(net.run(second, 600000), host::Result::done) << second.error();
+    expect_exactly_once_and_on_target(net, program, 701);
+    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-3);
+    std::printf("host died after %lld of %zu blocks were accepted (%lld sent); the restarted host published %lld "
+                "(its first window before a status: repeats, refused); the bridge forwarded %lld in all\n",
+                static_cast<long long>(ran), program.blocks.size(), static_cast<long long>(sent),
+                static_cast<long long>(second.statistics().blocks_published),
+                static_cast<long long>(net.chain->bridge().blocks_forwarded()));
+}
