@@ -320,3 +320,39 @@ TEST(LcmFaults, HostDiesAndARestartedHostResumesTheProgramExactlyOnce) {
                 static_cast<long long>(second.statistics().blocks_published),
                 static_cast<long long>(net.chain->bridge().blocks_forwarded()));
 }
+
+// The component restarts mid-program (firtp.so and the bridge unloaded and loaded again, as a
+// crashed and restarted HAL would): it has lost the program, and must not run the rest of it as if
+// nothing had happened. The host's next blocks are a gap for the new component (it expects seq 1
+// of a new program), so nothing of the old program runs there, and the host fails once the
+// component's statuses have named another program for 1 s. (Before, the host waited for ever,
+// reporting nothing: it had no block outstanding, so its resend timeout never fired.) Measured and
+// documented, not fixed: the restarted component
+// starts at the origin (firtp.so has no position feedback input), a jump of its commanded position
+// if its enable is on (docs/HARDENING.md).
+TEST(LcmFaults, ComponentRestartMidProgramRunsNothingOfItAndTheHostFails) {
+    Network net({}, {}, 41);
+    const Program program = random_program(6, 120);
+    host::Host h(*net.host_lcm, program, net.options(801));
+    for (int k = 0; k < 3000; ++k) net.step(&h);
+    ASSERT_EQ(h.result(), host::Result::running);
+    const AxisVector before = net.position();
+    const std::size_t states_before = net.states.size();
+    net.chain.reset();  // the component side goes away ...
+    net.chain = std::make_unique<ServoChain>(*net.component_lcm, net.machine, default_module_path(), Network::small());
+    EXPECT_EQ(net.run(h, 60000), host::Result::failed);
+    EXPECT_NE(h.error().find("the component no longer has program 801"), std::string::npos) << h.error();
+    EXPECT_LT(net.now - 3000, 2000);  // reported within 2 s
+    EXPECT_EQ(net.chain->bridge().blocks_forwarded(), 0);  // nothing of the old program ran
+    ASSERT_GT(net.states.size(), states_before);
+    const firtp_lcm::axis_state_t& first = net.states[states_before];
+    double jump = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(first.position[a], 0.0);
+        jump = std::max(jump, std::abs(before[a]));
+    }
+    EXPECT_EQ(net.statuses.back().next_seq, 1);
+    std::printf("component restarted after %lld periods: the host failed after %.1f s (%s); the new component ran no "
+                "block; its output started at the origin, %.1f mm from where the old one was\n",
+                3000LL, static_cast<double>(net.now - 3000) / 1000.0, h.error().c_str(), jump);
+}

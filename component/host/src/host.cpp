@@ -16,6 +16,10 @@ namespace {
 using firtp_lcm::status_t;
 
 constexpr int max_messages_per_step = 10000;  // step() never spins forever on a flood
+// Statuses that name another program for this long after ours was seen: the component has lost
+// ours (it restarted, or another host's program replaced it). A late status from before ours
+// started is a one-off and does not last this long.
+constexpr auto lost_program_after = std::chrono::seconds(1);
 
 }  // namespace
 
@@ -73,7 +77,20 @@ struct Host::State {
         stream.on_status(*status, t);
         if (result != Result::running) return;
         const Result judged = watch.on_status(*status, aborting);
-        if (judged != Result::running) finish(judged, watch.error());
+        if (judged != Result::running) return finish(judged, watch.error());
+        if (status->program == program_id) {
+            seen_ours = true;
+            other_program_since.reset();
+        } else if (seen_ours && !aborting) {
+            if (!other_program_since) other_program_since = t;
+            if (t - *other_program_since >= lost_program_after)
+                finish(Result::failed, "the component no longer has program " + std::to_string(program_id) +
+                                           " (its status has named program " + std::to_string(status->program) +
+                                           " for " + std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                                        t - *other_program_since).count()) +
+                                           " ms): it restarted, or another program replaced it; block seq " +
+                                           std::to_string(stream.acknowledged() + 1) + " was next");
+        }
     }
 
     void on_axis_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* state) {
@@ -135,6 +152,8 @@ struct Host::State {
     std::int64_t rejected_before = 0;  // status rejected count when this host started
     bool started = false;
     bool aborting = false;
+    bool seen_ours = false;                                 // a status has named this program
+    std::optional<Clock::time_point> other_program_since;  // since when statuses name another
     Clock::time_point last_status{};    // or the first step, before any status
 };
 
