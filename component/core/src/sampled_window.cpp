@@ -9,6 +9,7 @@ namespace firtp {
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr std::int64_t never = std::numeric_limits<std::int64_t>::max();
 
 // Distance from a point to the segment a-b over the first n axes (the machine's).
 double chord_distance(const AxisVector& point, const AxisVector& a, const AxisVector& b, int n) {
@@ -69,7 +70,7 @@ void SampledWindow::reset(const AxisVector& position, std::int64_t tick) {
     corner_head_ = 0;
     corner_count_ = 1;
     cursor_ = 0;
-    corner(0) = {position, infinity, infinity, false, std::numeric_limits<std::int64_t>::max(), position};
+    corner(0) = {position, infinity, infinity, false, never, position, never, never};
     sweep_tail();
 }
 
@@ -81,8 +82,9 @@ void SampledWindow::sweep_tail() {
 const SampledWindow::Sweep& SampledWindow::prefix(std::size_t i) const {
     for (; prefix_valid_ <= i; ++prefix_valid_) {
         prefix_[prefix_valid_] = prefix_[prefix_valid_ - 1];
-        const_cast<SampledWindow*>(this)->visit(prefix_[prefix_valid_], tail_[prefix_valid_ - 1].position, false,
-                                                AxisVector::Zero());
+        const_cast<SampledWindow*>(this)->visit(prefix_[prefix_valid_], tail_[prefix_valid_ - 1].position,
+                                                tail_tick_ + static_cast<std::int64_t>(prefix_valid_) - 1, false,
+                                                AxisVector::Zero(), never);
     }
     return prefix_[i];
 }
@@ -146,7 +148,8 @@ SampledWindow::Sweep SampledWindow::start_sweep() const {
     return w;
 }
 
-bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta) {
+bool SampledWindow::visit(Sweep& w, const AxisVector& p, std::int64_t tick, bool keep,
+                          const AxisVector& candidate_delta, std::int64_t candidate_start) {
     // Closest approach of the chord from the previous sample to junction i. At speed the tool may
     // pass several short segments between two samples: each junction it passes meets the chord.
     auto approach = [&](std::size_t i, double best) {
@@ -155,9 +158,15 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
     for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j) w.closest[j] = approach(w.cursor + j, w.closest[j]);
     bool ok = true;
     // The tool has passed a junction once the segment after it is as near as the one before. Ties
-    // advance: a retract and its plunge lie on one line, and the cursor must not stay behind.
-    while (w.cursor + 1 < corner_count_ &&
-           segment_distance(p, w.cursor + 1, candidate_delta) <= segment_distance(p, w.cursor, candidate_delta)) {
+    // advance: a retract and its plunge lie on one line, and the cursor must not stay behind. Time
+    // bounds it both ways: not before the pulse leaving the junction has begun, and for certain once
+    // the pulse arriving there has filtered out, wherever a path passing back near itself seems to be.
+    auto started = [&](std::size_t i) {
+        return (i + 1 == corner_count_ ? candidate_start : corner(i).start_tick) <= tick;
+    };
+    while (w.cursor + 1 < corner_count_ && started(w.cursor + 1) &&
+           (corner(w.cursor + 1).passed_tick <= tick ||
+            segment_distance(p, w.cursor + 1, candidate_delta) <= segment_distance(p, w.cursor, candidate_delta))) {
         const Corner& passed = corner(w.cursor);
         if (meaning_ == ToleranceMeaning::corner_point && passed.bound && w.closest[0] > passed.epsilon) ok = false;
         w.closest[0] = w.closest[1];
@@ -174,14 +183,15 @@ bool SampledWindow::visit(Sweep& w, const AxisVector& p, bool keep, const AxisVe
     return ok;
 }
 
-bool SampledWindow::check_sample(Sweep& w, const Sample& s, double contour_epsilon,
-                                 const AxisVector& candidate_delta, bool consecutive) const {
+bool SampledWindow::check_sample(Sweep& w, const Sample& s, std::int64_t tick, double contour_epsilon,
+                                 const Candidate& c, std::int64_t candidate_start, bool consecutive) const {
     if (check_limits_ && !within_limits(s)) return false;
     if (check_limits_ && consecutive && !differences_within_limits(w, s.position)) return false;
     // Find the junction the tool is at first: between samples it may pass several short segments.
-    if (!const_cast<SampledWindow*>(this)->visit(w, s.position, false, candidate_delta)) return false;  // no writes
+    if (!const_cast<SampledWindow*>(this)->visit(w, s.position, tick, false, c.delta, candidate_start))  // no writes
+        return false;
     return meaning_ != ToleranceMeaning::contour || !std::isfinite(contour_epsilon) ||
-           path_distance(s.position, w.cursor, candidate_delta) <= contour_epsilon;
+           path_distance(s.position, w.cursor, c.delta) <= contour_epsilon;
 }
 
 bool SampledWindow::feasible(const Candidate& c, int stride) const {
@@ -202,11 +212,11 @@ bool SampledWindow::feasible(const Candidate& c, int stride) const {
     Sweep w = prefix(static_cast<std::size_t>(skip));
     for (std::int64_t k = r.a0 + skip; k <= r.a1; k = k + stride <= r.a1 || k == r.a1 ? k + stride : r.a1) {
         if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
-        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
+        if (!check_sample(w, with(c, k, committed(k)), k, contour_epsilon, c, start, stride == 1)) return false;
     }
     w.known = 0;  // the middle of a long pulse is skipped
     for (std::int64_t k = r.b0; k <= r.b1; k = k + stride <= r.b1 || k == r.b1 ? k + stride : r.b1)
-        if (!check_sample(w, with(c, k, committed(k)), contour_epsilon, c.delta, stride == 1)) return false;
+        if (!check_sample(w, with(c, k, committed(k)), k, contour_epsilon, c, start, stride == 1)) return false;
     // At rest on the last point: what is left must be within tolerance too.
     if (meaning_ == ToleranceMeaning::corner_point)
         for (std::size_t j = 0; j < 3 && w.cursor + j < corner_count_; ++j)
@@ -233,7 +243,7 @@ void SampledWindow::commit(const Candidate& c) {
     auto fold = [&](std::int64_t from, std::int64_t to) {
         for (std::int64_t k = from; k < to; ++k) {
             if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
-            visit(w, with(c, k, committed(k)).position, true, c.delta);
+            visit(w, with(c, k, committed(k)).position, k, true, c.delta, start);
         }
     };
     if (end - start > 2 * window_ticks_) {
@@ -261,13 +271,14 @@ void SampledWindow::commit(const Candidate& c) {
     Corner& from = corner(corner_count_ - 1);
     from.release_tick = end + window_ticks_;
     from.segment_end = from.point + c.delta;
+    from.start_tick = start;
     if (corner_count_ == corners_.size()) {  // full: forget the oldest
         corner_head_ = (corner_head_ + 1) % corners_.size();
         --corner_count_;
         if (cursor_ > 0) --cursor_;
     }
     ++corner_count_;
-    corner(corner_count_ - 1) = {rest_, infinity, infinity, false, std::numeric_limits<std::int64_t>::max(), rest_};
+    corner(corner_count_ - 1) = {rest_, infinity, infinity, false, never, rest_, never, end + window_ticks_};
     release_passed_corners(end);
     sweep_tail();
 }

@@ -61,6 +61,9 @@ private:
         bool bound;
         std::int64_t release_tick; // after this tick nothing can move it (set when known)
         AxisVector segment_end;    // the segment that starts here ends at the next corner
+        // Time order, which holds where geometry is ambiguous (a path passing back near itself):
+        std::int64_t start_tick;   // the pulse leaving this junction has begun (before: not passed)
+        std::int64_t passed_tick;  // the pulse arriving here has filtered out: passed from then on
     };
 
     // A pass over samples in time order: which junction the tool is at, and the closest
@@ -81,9 +84,12 @@ private:
     Sweep start_sweep() const;
     // Takes the sample at p; false when a junction the tool passed was not approached within its
     // tolerance. With `keep`, passed junctions keep their closest approach for good.
-    bool visit(Sweep& w, const AxisVector& p, bool keep, const AxisVector& candidate_delta);
-    bool check_sample(Sweep& w, const Sample& s, double contour_epsilon, const AxisVector& candidate_delta,
-                      bool consecutive) const;
+    // The sample at `tick`; the candidate's segment leaves the last junction (candidate_delta,
+    // first sample candidate_start).
+    bool visit(Sweep& w, const AxisVector& p, std::int64_t tick, bool keep, const AxisVector& candidate_delta,
+               std::int64_t candidate_start);
+    bool check_sample(Sweep& w, const Sample& s, std::int64_t tick, double contour_epsilon, const Candidate& c,
+                      std::int64_t candidate_start, bool consecutive) const;
     void sweep_tail();  // restarts prefix_ from the finalized state
     const Sweep& prefix(std::size_t i) const;  // extends prefix_ to entry i
     void release_passed_corners(std::int64_t tick);  // junctions no sample from tick on can approach
