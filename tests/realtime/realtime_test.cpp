@@ -72,7 +72,11 @@ TEST(RtProbe, CountsAllocationsFreesAndLocksOfTheArmedThreadOnly) {
     m.lock();
     m.unlock();
     std::thread([] {  // another thread's allocations are not counted
-        for (int i = 0; i < 10; ++i) escape(new int(i));
+        for (int i = 0; i < 10; ++i) {
+            int* q = new int(i);
+            escape(q);
+            delete q;
+        }
     }).join();
     const rt_probe::Counts c = rt_probe::disarm();
     // pthread_create and join allocate and lock in this thread; the probe counts them too.
@@ -203,6 +207,7 @@ TEST(TpCoreRealTime, ServoThreadCallsNeitherAllocateNorLock) {
     TpSettings s;
     s.jerk = 1e5;
     s.default_tolerance = 0.05;
+    s.plan_budget_ns = 0;  // no time budget: the same work in every build (sanitizers are slower)
     TpCore tp(s);
     Pose vmax{}, amax{};
     for (int a = 0; a < 3; ++a) vmax[a] = 300, amax[a] = 5000;
@@ -279,7 +284,7 @@ TEST(TpCoreRealTime, ServoThreadCallsNeitherAllocateNorLock) {
                 worst_end);
     EXPECT_GT(completed, 10);
     EXPECT_GT(aborts, 3);
-    EXPECT_GT(arcs, 100);
+    EXPECT_GT(arcs, 50);
     EXPECT_LE(worst_end, 1e-9);
 }
 
