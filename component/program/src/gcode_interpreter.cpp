@@ -18,6 +18,9 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr std::string_view axis_words = "XYZABCUVW";
 constexpr std::string_view centre_letters = "IJK";  // the centre word of axis X, Y, Z
 constexpr int max_turns = 10000;
+// Farthest a move may go from the origin, machine units (mm, degrees): as messages::validate. Beyond,
+// a coordinate is a typo or a unit mix-up, and lengths would overflow (1e200 squared is inf).
+constexpr double max_coordinate = 1e6;
 
 bool is_arc(int motion) { return motion == 20 || motion == 30; }
 bool is_rotary(Eigen::Index axis) { return axis >= 3 && axis < 6; }
@@ -63,8 +66,12 @@ bool Interpreter::run(const LineWords& w, const Where& at) {
         const int column = w.g(motion) != nullptr ? w.g(motion)->column : first->column;
         if (state_.motion < 0)
             at.fail(first->column, cat(first->letter, " word with no motion in effect: program G0 or G1 first"));
-        if (is_arc(state_.motion)) arc(w, target_of(w), column, at);
-        else line(target_of(w), column, at);
+        const AxisVector target = target_of(w);
+        for (std::size_t a = 0; a < axis_words.size(); ++a)
+            if (const Word* word = w.get(axis_words[a]); word != nullptr && !(std::abs(target[static_cast<Eigen::Index>(a)]) <= max_coordinate))
+                at.fail(word->column, cat(word->letter, " word '", word->text, "': the end point is beyond +-1e6 machine units"));
+        if (is_arc(state_.motion)) arc(w, target, column, at);
+        else line(target, column, at);
     }
     return w.get('M') != nullptr;
 }
@@ -127,7 +134,7 @@ void Interpreter::line(const AxisVector& target, int column, const Where& at) {
     const double speed = rapid ? cap : std::min(programmed, cap);
     if (!std::isfinite(speed)) at.fail(column, "G0 needs the axes' MAX_VELOCITY: this machine has no rapid speed");
     push(target, speed * (lengths.all / path), state_.termination, state_.tolerance,
-         rapid ? MotionType::traverse : MotionType::feed, at);
+         rapid ? MotionType::traverse : MotionType::feed, column, at);
 }
 
 // G2 / G3 as equal-angle chords, all at one speed along the X Y Z helix.
@@ -166,7 +173,7 @@ void Interpreter::arc(const LineWords& w, const AxisVector& target, int column, 
         const double feed = move_lengths(to - from).all * speed / chord_path;  // duration = chord_path / speed
         const bool last = k == chords;
         push(to, feed, last ? state_.termination : Termination::blend, last ? state_.tolerance : inner_tolerance,
-             MotionType::feed, at);
+             MotionType::feed, column, at);
         from = to;
     }
 }
@@ -231,7 +238,11 @@ double Interpreter::arc_speed_limit(double radius, double tolerance) const {
 }
 
 void Interpreter::push(const AxisVector& target, double feed, Termination termination, double tolerance,
-                       MotionType type, const Where& at) {
+                       MotionType type, int column, const Where& at) {
+    // An arc of a huge radius can pass far beyond its end points.
+    if (!(target.cwiseAbs().maxCoeff() <= max_coordinate))
+        at.fail(column, "the move passes beyond +-1e6 machine units");
+    if (!(std::isfinite(feed) && feed > 0.0)) at.fail(column, "the move's speed is not a positive finite number");
     Block block;
     block.target = target;
     block.feed = feed;

@@ -42,7 +42,7 @@ private:
     int arc_turns(const LineWords& w, const Where& at) const;
     double arc_speed_limit(double radius, double tolerance) const;
     void push(const AxisVector& target, double feed, Termination termination, double tolerance, MotionType type,
-              const Where& at);
+              int column, const Where& at);
 
     const MachineConfig& machine_;
     double filter_time_squares_ = 0.0;  // sum of T_i^2, 0 when the filter times are not known
