@@ -12,14 +12,7 @@
 #include <cstdlib>
 #include <string_view>
 
-// A property that must hold: abort (libFuzzer saves the input) naming it.
-#define require(condition)                                                                  \
-    do {                                                                                  \
-        if (!(condition)) {                                                               \
-            std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-            std::abort();                                                                 \
-        }                                                                                 \
-    } while (false)
+#include "require.hpp"
 
 namespace {
 

@@ -19,14 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-// A property that must hold: abort (libFuzzer saves the input) naming it.
-#define require(condition)                                                                  \
-    do {                                                                                  \
-        if (!(condition)) {                                                               \
-            std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-            std::abort();                                                                 \
-        }                                                                                 \
-    } while (false)
+#include "require.hpp"
 
 namespace {
 

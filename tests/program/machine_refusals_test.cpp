@@ -2,6 +2,7 @@
 // filter times that cannot be built (a stage neither given nor derivable, untunable modes, a
 // window too long for the planner) and limit keys that are misspelt. The per-value checks (zero,
 // negative, NaN, not a number, unknown [FIRTP] keys) are in machine_test.cpp.
+#include "machine_test_support.hpp"
 #include <component_core.hpp>
 #include <firtp/machine.hpp>
 
@@ -14,15 +15,7 @@ namespace {
 
 using firtp::ConfigError;
 using firtp::IniFile;
-
-std::string load_error(const std::string& text) {
-    try {
-        firtp::load_machine(IniFile::parse(text, "mill.ini"));
-    } catch (const ConfigError& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using firtp::test::load_error;
 
 // A jerk limit of 1 gives T2 = a / j = 5000 s: before, this INI loaded and building its planner
 // tried to allocate a 5-million-sample window (found by tests/fuzz/fuzz_ini as an out-of-memory).

@@ -1,3 +1,4 @@
+#include "machine_test_support.hpp"
 #include <firtp/machine.hpp>
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@ namespace {
 
 using firtp::ConfigError;
 using firtp::IniFile;
+using firtp::test::load_error;
 using firtp::MachineConfig;
 
 constexpr const char* sample_ini = R"(# A LinuxCNC INI with firtp keys
@@ -45,15 +47,6 @@ TOLERANCE = 0.02
 TOLERANCE_MEANING = contour
 ARC_CHORD_TOLERANCE = 0.005
 )";
-
-std::string load_error(const std::string& text) {
-    try {
-        firtp::load_machine(IniFile::parse(text, "mill.ini"));
-    } catch (const ConfigError& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 TEST(Machine, DefaultMachine) {
     const MachineConfig m = firtp::default_machine();
