@@ -16,20 +16,8 @@
 #include <random>
 
 using namespace firtp;
+using firtp::test::line_to;
 using firtp::test::xyz;
-
-namespace {
-
-Block line_to(const AxisVector& target, double feed, double tolerance, std::int64_t line) {
-    Block b;
-    b.target = target;
-    b.feed = feed;
-    b.tolerance = tolerance;
-    b.line = line;
-    return b;
-}
-
-}  // namespace
 
 TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters) {
     std::mt19937_64 rng(11);
@@ -175,10 +163,9 @@ TEST(DensePaths, PathsPassingBackNearThemselvesDoNotLoseTheToolOrTheFeed) {
         }
         if (at.norm() > 200.0 && direction.dot(at) > 0.0) direction = -direction;
         at += direction * length(rng);
-        Block b = line_to(at, feed(rng), 0.0, i + 1);
-        b.tolerance = tolerance(rng);
+        const double f = feed(rng), tol = tolerance(rng);  // drawn in this order, as the benchmark does
         if (i == skipped - 1) start = at;
-        if (i >= skipped) blocks.push_back(b);
+        if (i >= skipped) blocks.push_back(line_to(at, f, tol, i + 1));
     }
     PlannerParameters p;
     p.filters = test::chain_of({0.06, 0.05});

@@ -11,20 +11,11 @@
 
 using namespace firtp;
 using firtp::test::chain_of;
+using firtp::test::line_to;
 using firtp::test::xyz;
 
 namespace {
 
-Block line_to(const AxisVector& target, double feed, double tolerance, std::int64_t line,
-              Termination termination = Termination::blend) {
-    Block b;
-    b.target = target;
-    b.feed = feed;
-    b.tolerance = tolerance;
-    b.termination = termination;
-    b.line = line;
-    return b;
-}
 
 std::vector<AxisVector> points_of(const AxisVector& start, const std::vector<Block>& blocks) {
     std::vector<AxisVector> points{start};

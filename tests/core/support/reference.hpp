@@ -89,6 +89,18 @@ inline FilterTimes chain_of(std::initializer_list<double> times) {
     return f;
 }
 
+// A G01 block to `target`.
+inline Block line_to(const AxisVector& target, double feed, double tolerance, std::int64_t line,
+                     Termination termination = Termination::blend) {
+    Block b;
+    b.target = target;
+    b.feed = feed;
+    b.tolerance = tolerance;
+    b.termination = termination;
+    b.line = line;
+    return b;
+}
+
 inline AxisVector xyz(double x, double y, double z = 0.0) {
     AxisVector v = AxisVector::Zero();
     v << x, y, z, 0, 0, 0, 0, 0, 0;
