@@ -17,6 +17,7 @@
 #include "hal.h"
 
 #include "component_core.hpp"
+#include "module_number.hpp"
 #include "hal_pin_access.hpp"
 #include "stream_records.hpp"
 
@@ -27,6 +28,7 @@
 #include <cstring>
 #include <exception>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -190,14 +192,12 @@ void update(void*, long) {
     throw std::invalid_argument(std::string(name) + (text && *text ? std::string("=") + text : std::string()) + ": " + why);
 }
 
-// A number parameter: absent or empty gives `fallback`; otherwise the whole text must be a finite
-// number (strtod alone would read "0.1x" as 0.1 and "abc" as 0).
+// A number parameter: absent or empty gives `fallback`; otherwise a whole finite number.
 double number(const char* name, const char* text, double fallback) {
     if (text == nullptr || *text == '\0') return fallback;
-    char* end = nullptr;
-    const double value = std::strtod(text, &end);
-    if (end == text || *end != '\0' || !std::isfinite(value)) refuse(name, text, "not a finite number");
-    return value;
+    const std::optional<double> value = firtp::module_number(text);
+    if (!value) refuse(name, text, "not a finite number");
+    return *value;
 }
 
 // "a,b,c" into field `limit` of the first axes: each a finite number >= 0 (0: not limited).
@@ -209,11 +209,10 @@ void read_limits(const char* name, const char* text, double firtp::AxisLimits::*
         const std::size_t comma = std::min(list.find(',', begin), list.size());
         if (a >= axes) refuse(name, text, "more values than axes=" + std::to_string(axes));
         const std::string item = list.substr(begin, comma - begin);
-        char* end = nullptr;
-        const double value = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(value)) refuse(name, text, "'" + item + "' is not a finite number");
-        if (value < 0.0) refuse(name, text, "'" + item + "' must be zero (no limit) or positive");
-        limits.axis[a].*limit = value;
+        const std::optional<double> value = firtp::module_number(item.c_str());
+        if (!value) refuse(name, text, "'" + item + "' is not a finite number");
+        if (*value < 0.0) refuse(name, text, "'" + item + "' must be zero (no limit) or positive");
+        limits.axis[a].*limit = *value;
         if (comma == list.size()) break;
         begin = comma + 1;
     }

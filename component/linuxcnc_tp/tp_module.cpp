@@ -32,6 +32,7 @@ extern "C" {
 
 #include "tp_arena.hpp"
 #include "tp_core.hpp"
+#include "module_number.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -107,11 +108,10 @@ bool reverse_refused_reported = false;
 
 std::int64_t now_ns() { return static_cast<std::int64_t>(rtapi_get_time()); }
 
+// Absent or empty: `fallback`; not a whole finite number: NaN (refused below, naming the parameter).
 double number(const char* text, double fallback) {
     if (text == nullptr || *text == '\0') return fallback;
-    char* end = nullptr;
-    const double v = std::strtod(text, &end);
-    return end != text && *end == '\0' && std::isfinite(v) ? v : NAN;
+    return firtp::module_number(text).value_or(NAN);
 }
 
 Pose pose_of(const EmcPose& p) {
