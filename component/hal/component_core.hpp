@@ -56,8 +56,8 @@ struct ComponentOutputs {
     std::int32_t queue_free = 0;
     ComponentState mode = ComponentState::idle;
     ComponentError error = ComponentError::none;
-    std::uint32_t program = 0;
-    std::uint32_t next_seq = 1;
+    std::uint64_t program = 0;           // the pins show the low 32 bits
+    std::uint64_t next_seq = 1;
     std::uint32_t rejected = 0;
 };
 
@@ -93,8 +93,8 @@ private:
     bool halted_ = false;                 // after a bad block: refuse the rest of that program
     bool ack_ = false;
     ComponentError error_ = ComponentError::none;
-    std::uint32_t program_ = 0;
-    std::uint32_t next_seq_ = 1;
+    std::uint64_t program_ = 0;
+    std::uint64_t next_seq_ = 1;
     std::uint32_t rejected_ = 0;
 };
 

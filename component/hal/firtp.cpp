@@ -171,8 +171,8 @@ void update(void*, long) {
     pin::set(pins->current_line, static_cast<std::int32_t>(out.state.line));
     pin::set(pins->state, static_cast<std::int32_t>(out.mode));
     pin::set(pins->error_code, static_cast<std::int32_t>(out.error));
-    pin::set(pins->program, out.program);
-    pin::set(pins->next_seq, out.next_seq);
+    pin::set(pins->program, static_cast<std::uint32_t>(out.program));  // low 32 bits
+    pin::set(pins->next_seq, static_cast<std::uint32_t>(out.next_seq));
     pin::set(pins->rejected, out.rejected);
     if (has_state_stream) {
         hal_stream_data record[firtp::stream::state_elements];

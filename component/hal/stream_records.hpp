@@ -15,14 +15,15 @@ namespace firtp::stream {
 inline constexpr int default_block_key = 0x46495242;  // "FIRB"
 inline constexpr int default_state_key = 0x46495253;  // "FIRS"
 
-// target[9], feed, tolerance, line, motion type, termination, program, seq
-inline constexpr const char* block_types = "fffffffffffsssuu";
-inline constexpr int block_elements = 16;
+// target[9], feed, tolerance, line, motion type, termination, program and seq (64 bits as in
+// block_t, each as low and high 32-bit halves)
+inline constexpr const char* block_types = "fffffffffffsssuuuu";
+inline constexpr int block_elements = 18;
 
 struct BlockRecord {
     Block block;
-    std::uint32_t program = 0;
-    std::uint32_t seq = 0;       // 0 on the pins: not checked
+    std::uint64_t program = 0;
+    std::uint64_t seq = 0;       // 0 on the pins: not checked
     bool type_known = true;      // motion type and termination were valid codes
 };
 
@@ -33,8 +34,10 @@ inline void pack(const BlockRecord& r, hal_stream_data* out) {
     out[11].s = static_cast<std::int32_t>(r.block.line);
     out[12].s = static_cast<std::int32_t>(r.block.type);
     out[13].s = r.block.termination == Termination::blend ? 1 : 0;
-    out[14].u = r.program;
-    out[15].u = r.seq;
+    out[14].u = static_cast<std::uint32_t>(r.program);
+    out[15].u = static_cast<std::uint32_t>(r.program >> 32);
+    out[16].u = static_cast<std::uint32_t>(r.seq);
+    out[17].u = static_cast<std::uint32_t>(r.seq >> 32);
 }
 
 // Sets type_known false when the motion type or termination is not a known code.
@@ -44,8 +47,8 @@ inline void unpack(const hal_stream_data* in, BlockRecord& r) {
     r.block.tolerance = in[10].f;
     r.block.line = in[11].s;
     const std::int32_t type = in[12].s, termination = in[13].s;
-    r.program = in[14].u;
-    r.seq = in[15].u;
+    r.program = std::uint64_t{in[14].u} | std::uint64_t{in[15].u} << 32;
+    r.seq = std::uint64_t{in[16].u} | std::uint64_t{in[17].u} << 32;
     r.type_known = (type == 1 || type == 2) && (termination == 0 || termination == 1);
     r.block.type = type == 1 ? MotionType::traverse : MotionType::feed;
     r.block.termination = termination == 1 ? Termination::blend : Termination::exact_stop;

@@ -49,12 +49,21 @@ std::vector<Block> diamond() {
     return blocks;
 }
 
-stream::BlockRecord record(const Block& b, std::uint32_t program, std::uint32_t seq) {
+stream::BlockRecord record(const Block& b, std::uint64_t program, std::uint64_t seq) {
     stream::BlockRecord r;
     r.block = b;
     r.program = program;
     r.seq = seq;
     return r;
+}
+
+// Through the hal_stream record, as the bridge writes it.
+stream::BlockRecord streamed(const stream::BlockRecord& r) {
+    hal_stream_data buffer[stream::block_elements];
+    stream::pack(r, buffer);
+    stream::BlockRecord out;
+    stream::unpack(buffer, out);
+    return out;
 }
 
 struct Servo {
@@ -209,4 +218,26 @@ TEST(ComponentCore, DisableFreezesAtOnceAndDropsEverything) {
     run.in.enable = true;
     run.ticks(500);
     EXPECT_EQ(run.samples.back().position, at);  // nothing of the old program resumes
+}
+
+TEST(ComponentCore, ProgramIdsAndSeqsKeepAll64BitsThroughTheStream) {
+    // Host ids are microseconds: two programs 2^32 us (71.6 min) apart share their low 32 bits.
+    const std::uint64_t first = 0x0000'1234'8000'0001, second = first + (std::uint64_t{1} << 32);
+    const std::uint64_t high_seq = (std::uint64_t{1} << 32) + 3;
+    const stream::BlockRecord r = streamed(record(diamond()[0], second, high_seq));
+    EXPECT_EQ(r.program, second);
+    EXPECT_EQ(r.seq, high_seq);
+
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    run.stream.records.push_back(streamed(record(blocks[0], first, 1)));
+    run.ticks(700);
+    ASSERT_EQ(run.out.mode, ComponentState::idle);
+    // The next program, not a repeat of the first one's seq 1.
+    run.stream.records.push_back(streamed(record(blocks[1], second, 1)));
+    run.ticks(700);
+    EXPECT_EQ(run.out.program, second);
+    EXPECT_EQ(run.out.next_seq, 2u);
+    EXPECT_EQ(run.out.rejected, 0u);
+    EXPECT_EQ(run.samples.back().position, blocks[1].target);
 }

@@ -181,7 +181,8 @@ public:
             }
             if (!at_rest || in_.hold || in_.feed_scale == 0.0 || ring.count != 0) break;
             if (out.next_seq != seq_ + 1)  // every block accepted once: nothing skipped
-                return violation("program %u: at rest with next_seq %u after %u blocks", program_, out.next_seq, seq_);
+                return violation("program %u: at rest with next_seq %llu after %u blocks", program_,
+                                 static_cast<unsigned long long>(out.next_seq), seq_);
             if (out.rejected - rejected_base_ != repeats_)  // every repeat refused, nothing else
                 return violation("program %u: %u blocks refused, %u repeats sent", program_, out.rejected - rejected_base_, repeats_);
             {

@@ -147,8 +147,8 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
     }
     stream::BlockRecord record;
     record.block = messages::to_block(*m);
-    record.program = static_cast<std::uint32_t>(m->program);
-    record.seq = static_cast<std::uint32_t>(m->seq);
+    record.program = static_cast<std::uint64_t>(m->program);  // all 64 bits reach the component
+    record.seq = static_cast<std::uint64_t>(m->seq);
     hal_stream_data buffer[stream::block_elements];
     stream::pack(record, buffer);
     hal_pin::set(pins_->abort, false);
