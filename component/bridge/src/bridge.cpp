@@ -20,6 +20,8 @@ const char* describe_component_error(std::int32_t code) {
         case firtp_lcm::status_t::ERROR_REPEATED: return "the component ignored a repeated block";
         case firtp_lcm::status_t::ERROR_BAD_TYPE: return "the component refused a block: unknown motion type";
         case firtp_lcm::status_t::ERROR_NOT_ENABLED: return "the component is not enabled: blocks dropped";
+        case firtp_lcm::status_t::ERROR_STOPPED_FROM_FEEDBACK:
+            return "the component started or was enabled while the machine moved: it stopped the axes from their feedback";
         default: return "the component reported an error";
     }
 }
