@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace firtp {
@@ -219,6 +221,52 @@ TEST(ModeTuning, SameModeOnTwoAxesCountsOnce) {
     EXPECT_EQ(distinct[0].axis, -1);
     EXPECT_THROW(distinct_modes(std::vector<StructuralMode>{{-1.0}}), std::invalid_argument);
     EXPECT_THROW(distinct_modes(std::vector<StructuralMode>{{5.0, 1.0}}), std::invalid_argument);
+}
+
+// The reason tune_filters refuses, "" when it tunes.
+std::string refusal(std::vector<double> bounds, int stages, std::vector<StructuralMode> modes,
+                    RobustTuning robust = RobustTuning::none) {
+    ModeTuning tuning;
+    tuning.modes = std::move(modes);
+    tuning.robust = robust;
+    tuning.spread = robust == RobustTuning::straddle ? 0.2 : 0.0;
+    try {
+        tune_filters(bounds, stages, tuning);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Inputs the INI reader refuses before tuning, given to the tuner directly: it refuses them itself
+// (k = L f beyond int was an undefined float-to-int conversion), whatever the magnitudes.
+TEST(ModeTuning, StagesBeyondAMillionModePeriodsAreRefused) {
+    ModeTuning tuning;
+    tuning.modes = {{10.0}};
+    const TunedFilters most = tune_filters(std::vector<double>{1e5}, 1, tuning);  // k = 10^6 exactly
+    EXPECT_EQ(most.stages[0].k, 1000000);
+    EXPECT_EQ(refusal({1e5 + 0.2}, 1, {{10.0}}),
+              "10 Hz: a filter stage of at least 100000 s would span more than a million periods of this mode");
+    EXPECT_EQ(refusal({1e300}, 1, {{10.0}}),
+              "10 Hz: a filter stage of at least 1e+300 s would span more than a million periods of this mode");
+    EXPECT_EQ(refusal({0.06}, 1, {{1e300}}),
+              "1e+300 Hz: a filter stage of at least 0.06 s would span more than a million periods of this mode");
+    EXPECT_EQ(refusal({std::numeric_limits<double>::max(), 0.01}, 2, {{1e-3}, {1e300}}),
+              "0.001 Hz: a filter stage of at least 1.79769e+308 s would span more than a million periods of this mode");
+    EXPECT_EQ(refusal({0.06}, 1, {{std::numeric_limits<double>::denorm_min()}}),
+              "4.94066e-324 Hz: one period of this mode (1 / f) is not a finite time");
+    EXPECT_EQ(refusal({0.06}, 1, {{1.5e308}}, RobustTuning::straddle),
+              "1.5e+308 Hz: the straddled zero f (1 + spread) is not finite");
+    EXPECT_EQ(refusal({1e308}, 2, {{1e-308}}), "the filter delay T1 + ... + Tn is not finite");
+    // A stage without a mode can take the huge bound: tuned, k small (the window check refuses it later).
+    const TunedFilters spare = tune_filters(std::vector<double>{1e300, 0.01}, 2, tuning);
+    EXPECT_EQ(spare.filters.T[0], 1e300);
+    EXPECT_EQ(spare.stages[1].k, 1);
+    // A missing stage is still named as such, not blamed on the modes.
+    EXPECT_EQ(refusal({1e300, 0.0, 0.0}, 3, {{10.0}}), "T3 is neither given nor derivable from the axis limits or a mode");
+    // Tiny and enormous modes that stay within a million periods still tune.
+    EXPECT_EQ(refusal({0.06}, 1, {{1e-300}}), "");
+    EXPECT_EQ(refusal({1e-300}, 1, {{1e300}}), "");
 }
 
 // The plain Hz list ([FIRTP]MODES = 6.8 11.4) through the old entry point.

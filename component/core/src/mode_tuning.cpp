@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +17,7 @@ constexpr double ceil_slack = 1e-9;       // k = ceil(L f - slack): a bound alre
 constexpr double band_step = 5e-4;        // scan of the frequency error; edges then bisected
 constexpr double band_floor = -0.9;       // lowest frequency error searched
 constexpr double spread_low = 0.01, spread_high = 0.45, spread_step = 0.005;
+constexpr double max_mode_periods = 1e6;  // k at most: what the INI reader allows for [FIRTP]MODES
 
 void check_mode(const StructuralMode& m) {
     if (!(std::isfinite(m.frequency_hz) && m.frequency_hz > 0.0))
@@ -27,6 +29,12 @@ void check_mode(const StructuralMode& m) {
 void check_spread(double spread) {
     if (!(std::isfinite(spread) && spread >= 0.0 && spread < 0.5))
         throw std::invalid_argument("the straddle spread must lie in (0, 0.5)");
+}
+
+std::string short_number(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
 }
 
 // A stage to place: its zero frequency and the mode it serves (-1: a stage for the limits only).
@@ -53,6 +61,8 @@ std::vector<Slot> tuned_slots(const std::vector<StructuralMode>& modes, const Mo
         case RobustTuning::straddle: {
             const double d = tuning.spread > 0.0 ? tuning.spread : straddle_spread(modes[m].damping);
             spreads[m] = d;
+            if (!std::isfinite(f * (1.0 + d)))
+                throw std::invalid_argument(short_number(f) + " Hz: the straddled zero f (1 + spread) is not finite");
             slots.push_back({f * (1.0 - d), index});
             slots.push_back({f * (1.0 + d), index});
             break;
@@ -62,11 +72,22 @@ std::vector<Slot> tuned_slots(const std::vector<StructuralMode>& modes, const Mo
     return slots;
 }
 
-// The smallest T = k / zero (k >= 1) not below `bound`.
+// The smallest T = k / zero (k >= 1) not below `bound`; NaN when k > max_mode_periods (also for an
+// infinite product) or T is not positive and finite: k is converted to int only after this check.
 double raised(double bound, double zero_hz, int* k_out = nullptr) {
     const double k = std::max(1.0, std::ceil(bound * zero_hz - ceil_slack));
+    const double t = k / zero_hz;
+    if (!(k <= max_mode_periods && std::isfinite(t) && t > 0.0)) return std::numeric_limits<double>::quiet_NaN();
     if (k_out) *k_out = static_cast<int>(k);
-    return k / zero_hz;
+    return t;
+}
+
+// Why no stage tuned to `zero_hz` reaches `bound` (raised() gave NaN).
+std::string unraisable(double bound, double zero_hz) {
+    if (!std::isfinite(1.0 / zero_hz))
+        return short_number(zero_hz) + " Hz: one period of this mode (1 / f) is not a finite time";
+    return short_number(zero_hz) + " Hz: a filter stage of at least " + short_number(bound) +
+           " s would span more than a million periods of this mode";
 }
 
 }  // namespace
@@ -120,14 +141,27 @@ TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, cons
     std::iota(order.begin(), order.begin() + n, 0);
     double best = std::numeric_limits<double>::infinity();
     std::array<int, max_stages> best_order{};
+    std::string too_long;  // the first stage that no k reaches, or a delay that is not finite
     do {
         double td = 0.0;
         bool feasible = true;
         for (int item = 0; item < n && feasible; ++item) {
             const double bound = bounds[static_cast<std::size_t>(order[static_cast<std::size_t>(item)])];
-            if (item < static_cast<int>(slots.size())) td += raised(bound, slots[static_cast<std::size_t>(item)].zero_hz);
-            else if (bound > 0.0) td += bound;
-            else feasible = false;
+            if (item < static_cast<int>(slots.size())) {
+                const double zero = slots[static_cast<std::size_t>(item)].zero_hz;
+                const double t = raised(bound, zero);
+                feasible = !std::isnan(t);
+                if (!feasible && too_long.empty()) too_long = unraisable(bound, zero);
+                td += feasible ? t : 0.0;
+            } else if (bound > 0.0) {
+                td += bound;
+            } else {
+                feasible = false;
+            }
+        }
+        if (feasible && !std::isfinite(td)) {
+            feasible = false;
+            if (too_long.empty()) too_long = "the filter delay T1 + ... + Tn is not finite";
         }
         if (feasible && td < best * (1.0 - 1e-12)) {
             best = td;
@@ -138,6 +172,7 @@ TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, cons
     if (!std::isfinite(best)) {
         // Too few bounds for the stages without a mode: name the first time that is missing.
         const auto positive = std::count_if(bounds.begin(), bounds.begin() + n, [](double b) { return b > 0.0; });
+        if (positive + static_cast<long>(slots.size()) >= n && !too_long.empty()) throw std::invalid_argument(too_long);
         throw std::invalid_argument("T" + std::to_string(positive + static_cast<long>(slots.size()) + 1) +
                                     " is neither given nor derivable from the axis limits or a mode");
     }

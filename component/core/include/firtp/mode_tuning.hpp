@@ -79,7 +79,8 @@ struct TunedFilters {
 // - among all assignments of modes to stages and all k, the delay Td = sum T_i is the smallest
 //   (every stop costs Td, every corner Td - Tk).
 // Throws std::invalid_argument when more than 4 stages are needed, a stage has neither a mode nor a
-// positive bound, or a mode or spread is out of range.
+// positive bound, a mode or spread is out of range, or the bounds need a stage of more than 10^6
+// periods of its mode (or a delay that is not finite): any finite input, however large or small.
 TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, const ModeTuning& tuning);
 
 // tune_filters over limit_filter_times(limits, given) (parameters.hpp): what [FIRTP]MODES gives.
