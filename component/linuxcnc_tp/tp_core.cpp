@@ -84,6 +84,9 @@ const char* describe(AddStatus status) {
         case AddStatus::too_many_chords: return "the arc needs too many chords: raise the module's chord_tol";
         case AddStatus::no_filters:
             return "no filter times: give t1 (and t2) to firtp_tp or set the axes' MAX_VELOCITY, MAX_ACCELERATION";
+        case AddStatus::window_too_long:
+            return "the filter delay T1 + ... + Tn is longer than 20000 servo periods: lower T1 (t1, else "
+                   "MAX_VELOCITY / MAX_ACCELERATION) or T2 (t2, else MAX_ACCELERATION / jerk)";
     }
     return "unknown";
 }
@@ -142,7 +145,7 @@ struct TpCore::Impl {
     double max_rate = 1.0;       // highest feed override asked for (emcmotConfig->maxFeedScale)
     double built_rate = 1.0;     // the one the planner holds the limits for
     FilterTimes wanted{};        // filters from the settings and the limits now
-    bool wanted_ok = false;
+    AddStatus wanted_status = AddStatus::no_filters;  // ok when they can be built
     bool dirty = true;           // the planner differs from what the settings and limits ask
 
     FirChain chain{};
@@ -203,7 +206,12 @@ struct TpCore::Impl {
         }
         std::sort(f.T.begin(), f.T.begin() + std::clamp(f.stages, 0, max_stages), [](double a, double b) { return a > b; });
         wanted = f;
-        wanted_ok = *validate(f) == '\0';
+        // validate_window: a longer window would make the rebuild allocate accordingly (gigabytes
+        // for a jerk limit of 1) in the servo thread; refused, counted once per change.
+        wanted_status = *validate(f) != '\0'                  ? AddStatus::no_filters
+                        : *validate_window(f, period) != '\0' ? AddStatus::window_too_long
+                                                              : AddStatus::ok;
+        if (wanted_status == AddStatus::window_too_long) ++stats.refused_windows;
     }
 
     PlannerParameters parameters() const {
@@ -226,7 +234,7 @@ struct TpCore::Impl {
 
     // Only while nothing moves: the planner and the interpolator start again at rest.
     void rebuild() {
-        if (!wanted_ok) return;
+        if (wanted_status != AddStatus::ok) return;  // the planner built before (if any) is kept
         const AxisVector at = state.position;
         planner.reset();
         interp.reset();
@@ -388,7 +396,7 @@ struct TpCore::Impl {
         if (spindle_sync != 0.0) return AddStatus::spindle_sync;
         if (r.indexer_joint >= 0 || r.motion_type == motion_indexrotary) return AddStatus::indexer;
         if (depth() >= static_cast<std::int64_t>(moves.size())) return AddStatus::queue_full;
-        if (!wanted_ok) return AddStatus::no_filters;
+        if (wanted_status != AddStatus::ok) return wanted_status;
         return AddStatus::ok;
     }
 
@@ -441,6 +449,7 @@ bool TpCore::set_period(double seconds) {
     if (!(seconds > 0.0) || !std::isfinite(seconds)) return false;
     if (seconds != impl_->period) {
         impl_->period = seconds;
+        impl_->update_wanted();  // the window's length in periods changes
         impl_->dirty = true;
     }
     return true;
@@ -652,6 +661,8 @@ Pose TpCore::dtg() const {
     return d;
 }
 const CycleStats& TpCore::stats() const { return impl_->stats; }
+AddStatus TpCore::filter_status() const { return impl_->wanted_status; }
+double TpCore::filter_delay() const { return impl_->wanted.delay(); }
 const TpSettings& TpCore::settings() const { return impl_->s; }
 
 }  // namespace firtp::linuxcnc_tp

@@ -21,7 +21,9 @@
 //   planner was created, so the planner is rebuilt from them when they change, in a period
 //   where nothing moves (the module passes the limits while idle, so that is before a program's
 //   first move). The rebuild allocates; in the LinuxCNC module operator new draws from an arena
-//   reserved at load (tp_arena.cpp).
+//   reserved at load (tp_arena.cpp). Limits (or a period) whose filter window would exceed
+//   max_window_periods are refused without allocating: the planner built before is kept and
+//   moves are refused (window_too_long) until they change.
 //
 // Real time: every member except the constructor runs in LinuxCNC's servo thread: no
 // allocation (except the rebuild, see above), no locks, no I/O, no exceptions, bounded time.
@@ -95,6 +97,7 @@ enum class AddStatus : int {
     bad_arc = -7,
     too_many_chords = -8,
     no_filters = -9,
+    window_too_long = -10,
 };
 const char* describe(AddStatus status);
 
@@ -114,6 +117,7 @@ struct CycleStats {
     std::int64_t plan_ns = 0;     // time spent planning (when a clock is set)
     std::int64_t rebuilds = 0;    // planner rebuilds so far
     std::int64_t refused_blocks = 0;  // blocks the planner refused (the program stopped on the path)
+    std::int64_t refused_windows = 0; // limit or period changes refused: filter window too long
     std::size_t pending = 0;      // moves not yet completely planned
     std::size_t blocks = 0;       // blocks in the interpolator
 };
@@ -167,6 +171,10 @@ public:
     double distance_to_go() const; // straight distance to its end
     Pose dtg() const;              // its end minus the position, per axis
     const CycleStats& stats() const;
+    // Whether the filters the settings, limits and period ask for now can be built: ok, no_filters
+    // or window_too_long (moves are then refused with it); and their delay T1 + ... + Tn in s.
+    AddStatus filter_status() const;
+    double filter_delay() const;
     const TpSettings& settings() const;
 
 private:

@@ -105,6 +105,7 @@ void (*aio_write)(int, double) = nullptr;
 double (*axis_vel_limit)(int) = nullptr;
 double (*axis_acc_limit)(int) = nullptr;
 bool reverse_refused_reported = false;
+std::int64_t windows_reported = 0;  // TpCore's refused_windows already reported
 
 std::int64_t now_ns() { return static_cast<std::int64_t>(rtapi_get_time()); }
 
@@ -136,6 +137,17 @@ void count_add(std::int64_t begin) {
     *pins->adds = static_cast<rtapi_s32>((*pins->adds + 1) & 0x7fffffff);
 }
 
+// Each refused change of the limits or period once: the planner is not rebuilt (no allocation).
+void report_refused_window() {
+    const std::int64_t refused = core->stats().refused_windows;
+    if (refused == windows_reported) return;
+    windows_reported = refused;
+    rtapi_print_msg(RTAPI_MSG_ERR,
+                    "firtp_tp: filter delay %g s refused: %s; the planner built before is kept and moves are refused "
+                    "until this changes\n",
+                    core->filter_delay(), firtp::linuxcnc_tp::describe(AddStatus::window_too_long));
+}
+
 // The axis limits as motmod has them now ([AXIS_n]MAX_VELOCITY, MAX_ACCELERATION, sent by task).
 void refresh_limits() {
     if (axis_vel_limit == nullptr || axis_acc_limit == nullptr) return;
@@ -145,6 +157,7 @@ void refresh_limits() {
         a[static_cast<std::size_t>(i)] = axis_acc_limit(i);
     }
     core->set_axis_limits(v, a);
+    report_refused_window();
 }
 
 void write_digital(int index, char on) {
@@ -273,6 +286,7 @@ int tpClear(TP_STRUCT* const tp) {
 
 int tpSetCycleTime(TP_STRUCT* tp, double secs) {
     if (!core->set_period(secs)) return -1;
+    report_refused_window();
     tp->cycleTime = secs;
     return 0;
 }

@@ -595,6 +595,82 @@ TEST(TpCore, FilterTimesFromTheLimitsSentAfterCreation) {
     EXPECT_LE(measured.max_jerk[0], 100000.0 * (1 + 1e-6) * 1.01);
 }
 
+// Limits whose filter window exceeds 20000 periods (validate_window): the rebuild would allocate
+// for it in the servo thread (2.7 GB for a jerk of 1). Refused once, nothing allocated, the planner
+// built before kept (a move queued before still ends on it); moves refused until the limits change.
+TEST(TpCore, LimitsGivingTooLongAWindowAreRefusedWithoutAllocating) {
+    TpSettings s = diamond_settings();
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.jerk = 100000.0;
+    TpCore tp(s);
+    tp.set_axis_limits(limits(300), limits(5000));  // T1 = 60 ms, T2 = 50 ms
+    tp.set_position(pose(0, 0));
+    const CycleInputs in;
+    MoveRequest r;
+    r.vel = 200;
+    r.end = pose(10, 0);
+    tp.set_term_cond(term_exact, 0.0);
+    ASSERT_EQ(tp.add_line(r), AddStatus::ok);
+    tp.run_cycle(in);  // built and planned, moving
+    ASSERT_EQ(tp.stats().rebuilds, 1);
+    ASSERT_FALSE(tp.done());
+
+    const long before = firtp::test::allocation_count();
+    tp.set_axis_limits(limits(300), limits(12));  // T1 = 300 / 12 = 25 s: 25000 periods
+    tp.set_axis_limits(limits(300), limits(12));  // the same again: not counted again
+    EXPECT_EQ(tp.filter_status(), AddStatus::window_too_long);
+    EXPECT_NEAR(tp.filter_delay(), 25.0 + 12.0 / 100000.0, 1e-12);
+    EXPECT_EQ(tp.stats().refused_windows, 1);
+    EXPECT_STREQ(describe(AddStatus::window_too_long),
+                 "the filter delay T1 + ... + Tn is longer than 20000 servo periods: lower T1 (t1, else "
+                 "MAX_VELOCITY / MAX_ACCELERATION) or T2 (t2, else MAX_ACCELERATION / jerk)");
+    for (int k = 0; k < 2000 && !tp.done(); ++k) tp.run_cycle(in);
+    EXPECT_TRUE(tp.done());
+    EXPECT_EQ(tp.position(), pose(10, 0));  // the queued move ended on the planner built before
+    r.end = pose(20, 0);
+    EXPECT_EQ(tp.add_line(r), AddStatus::window_too_long);
+    for (int k = 0; k < 100; ++k) tp.run_cycle(in);
+    EXPECT_EQ(tp.stats().rebuilds, 1);
+    EXPECT_EQ(tp.position(), pose(10, 0));
+    EXPECT_EQ(firtp::test::allocation_count() - before, 0);
+
+    // The previous limits again: rebuilt, moves plan.
+    tp.set_axis_limits(limits(300), limits(5000));
+    EXPECT_EQ(tp.filter_status(), AddStatus::ok);
+    EXPECT_EQ(tp.add_line(r), AddStatus::ok);
+    for (int k = 0; k < 2000 && !tp.done(); ++k) tp.run_cycle(in);
+    EXPECT_EQ(tp.position(), pose(20, 0));
+    EXPECT_EQ(tp.stats().rebuilds, 2);
+    EXPECT_EQ(tp.stats().refused_windows, 1);
+
+    // A shorter period makes the same window longer in periods: T1 = 2.5 s is 25000 periods at 0.1 ms.
+    tp.set_axis_limits(limits(300), limits(120));
+    EXPECT_EQ(tp.filter_status(), AddStatus::ok);
+    ASSERT_TRUE(tp.set_period(0.0001));
+    EXPECT_EQ(tp.filter_status(), AddStatus::window_too_long);
+    EXPECT_EQ(tp.stats().refused_windows, 2);
+}
+
+// A jerk of 1 (T2 = a / j = 5000 s, 5 million periods): nothing is ever built, moves are refused.
+TEST(TpCore, JerkOfOneIsRefusedBeforeAnyPlannerIsBuilt) {
+    TpSettings s = diamond_settings();
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.jerk = 1.0;
+    TpCore tp(s);
+    const long before = firtp::test::allocation_count();
+    tp.set_axis_limits(limits(300), limits(5000));
+    EXPECT_EQ(tp.filter_status(), AddStatus::window_too_long);
+    EXPECT_EQ(tp.stats().refused_windows, 1);
+    MoveRequest r;
+    r.vel = 100;
+    r.end = pose(1, 0);
+    EXPECT_EQ(tp.add_line(r), AddStatus::window_too_long);
+    for (int k = 0; k < 10; ++k) tp.run_cycle(CycleInputs{});
+    EXPECT_EQ(tp.stats().rebuilds, 0);
+    EXPECT_TRUE(tp.done());
+    EXPECT_EQ(firtp::test::allocation_count() - before, 0);
+}
+
 TEST(TpCore, QueueFullBeforeTheRingIs) {
     TpSettings s = diamond_settings();
     s.moves = 64;
