@@ -72,6 +72,20 @@ TEST(BadInput, IniValueNamesFileLineAndKey) {
     EXPECT_EQ(dir.names(), (std::set<std::string>{"machine.ini", "prog.ngc"}));
 }
 
+// [FIRTP]MAX_PROGRAM_BLOCKS: an arc whose chords take the program beyond it, named, nothing written.
+TEST(BadInput, ProgramBeyondMaxProgramBlocksNamesTheLine) {
+    TempDir dir;
+    write_file(dir / "machine.ini", "[FIRTP]\nMAX_PROGRAM_BLOCKS = 100\n");
+    write_file(dir / "prog.ngc", "G1 F600 X10\nG2 X10 Y0 I-10 J0\nM2\n");
+    const Outcome r = run_firtp({"plan", (dir / "prog.ngc").string(), "--ini", (dir / "machine.ini").string(),
+                                 "--csv", (dir / "out.csv").string()});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "firtp: " + (dir / "prog.ngc").string() +
+                         ":2:1: the program needs more than 100 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 100): this arc's "
+                         "223 chords come after 1 block (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)\n");
+    EXPECT_EQ(dir.names(), (std::set<std::string>{"machine.ini", "prog.ngc"}));
+}
+
 TEST(BadInput, NegativeFlagValueNamesTheFlag) {
     const Failure f = plan_in_dir(good_program, {"--t1", "-3"});
     EXPECT_EQ(f.outcome.exit_code, 2);

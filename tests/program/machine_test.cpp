@@ -137,7 +137,7 @@ TEST(Machine, ValueErrorsNameFileLineAndKey) {
 TEST(Machine, FirtpSectionErrors) {
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 2\nT5 = 0.1\n"),
               "mill.ini:3: [FIRTP]T5: unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, "
-              "ARC_CHORD_TOLERANCE, RATE_RESERVE, ROBUST)");
+              "ARC_CHORD_TOLERANCE, RATE_RESERVE, ROBUST, MAX_PROGRAM_BLOCKS)");
     EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 1\n"),
               "mill.ini:2: [FIRTP]RATE_RESERVE: must be below 1 (a share of the acceleration and jerk limits)");
     EXPECT_EQ(load_error("[FIRTP]\nRATE_RESERVE = 0\n"), "mill.ini:2: [FIRTP]RATE_RESERVE: '0' must be positive");

@@ -60,7 +60,9 @@ Arc make_arc(const ArcPlane& plane, const AxisVector& start, const AxisVector& e
              bool clockwise, int turns, const ArcTolerances& tolerances);
 
 // Equal-angle chords whose sagitta r (1 - cos(dtheta / 2)) is at most chord_tolerance, at least
-// four a full turn and at least one. Throws ArcError past max_arc_chords.
+// four a full turn and at least one. Throws ArcError past max_arc_chords: a turn needs at most
+// ~2,200 (1 m radius, 1 um chords) but P allows 10,000 turns; memory is bounded by
+// MachineConfig::max_program_blocks, so this only catches absurd chord tolerances early.
 constexpr int max_arc_chords = 1'000'000;
 int chord_count(const Arc& arc, double chord_tolerance);
 

@@ -150,6 +150,10 @@ void Interpreter::arc(const LineWords& w, const AxisVector& target, int column, 
     } catch (const ArcError& e) {
         at.fail(column, e.what());
     }
+    if (const std::size_t made = blocks_.size(); static_cast<std::size_t>(chords) > machine_.max_program_blocks - made)
+        at.fail(column, cat(too_many_blocks(), ": this arc's ", std::to_string(chords), " chords come after ",
+                            std::to_string(made), made == 1 ? " block" : " blocks",
+                            " (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)"));
 
     // Inside the arc the chords blend; in G61 / G61.1 with the machine's tolerance.
     const bool blend = state_.termination == Termination::blend;
@@ -228,6 +232,13 @@ int Interpreter::arc_turns(const LineWords& w, const Where& at) const {
     return static_cast<int>(p->value);
 }
 
+// The program is kept whole in memory, 112 bytes a block: a few short lines of many-chord arcs
+// would otherwise fill it.
+std::string Interpreter::too_many_blocks() const {
+    const std::string most = std::to_string(machine_.max_program_blocks);
+    return cat("the program needs more than ", most, " blocks ([FIRTP]MAX_PROGRAM_BLOCKS = ", most, ")");
+}
+
 // The FIR chain pulls a circle of radius R inwards by about v^2 * sum(T_i^2) / (24 R): keep that within
 // 90 % of the tolerance the chords blend with. The rest is for the chords and the line-arc junctions;
 // a shrink of the whole tolerance leaves the planner no room and the feed goes stop-and-go.
@@ -243,6 +254,7 @@ void Interpreter::push(const AxisVector& target, double feed, Termination termin
     if (!(target.cwiseAbs().maxCoeff() <= max_coordinate))
         at.fail(column, "the move passes beyond +-1e6 machine units");
     if (!(std::isfinite(feed) && feed > 0.0)) at.fail(column, "the move's speed is not a positive finite number");
+    if (blocks_.size() >= machine_.max_program_blocks) at.fail(column, too_many_blocks());
     Block block;
     block.target = target;
     block.feed = feed;

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace firtp::gcode {
@@ -41,6 +42,7 @@ private:
     Eigen::Vector2d arc_centre(const LineWords& w, const AxisVector& target, int column, const Where& at) const;
     int arc_turns(const LineWords& w, const Where& at) const;
     double arc_speed_limit(double radius, double tolerance) const;
+    std::string too_many_blocks() const;
     void push(const AxisVector& target, double feed, Termination termination, double tolerance, MotionType type,
               int column, const Where& at);
 

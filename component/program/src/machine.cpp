@@ -68,12 +68,12 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
 void read_firtp(const IniFile& ini, MachineConfig& m) {
     static constexpr std::string_view known[] = {"STAGES",    "T1", "T2", "T3", "T4", "MODES",
                                                  "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE",
-                                                 "RATE_RESERVE", "ROBUST"};
+                                                 "RATE_RESERVE", "ROBUST", "MAX_PROGRAM_BLOCKS"};
     for (const IniFile::Entry* e : ini.section("FIRTP"))
         if (std::find(std::begin(known), std::end(known), e->key) == std::end(known))
             fail(ini, *e,
                  "unknown key (known: STAGES, T1..T4, MODES, TOLERANCE, TOLERANCE_MEANING, ARC_CHORD_TOLERANCE, "
-                 "RATE_RESERVE, ROBUST)");
+                 "RATE_RESERVE, ROBUST, MAX_PROGRAM_BLOCKS)");
     if (const auto r = positive(ini, "FIRTP", "RATE_RESERVE")) {
         if (*r >= 1.0) fail(ini, *ini.find("FIRTP", "RATE_RESERVE"), "must be below 1 (a share of the acceleration and jerk limits)");
         m.rate_reserve = *r;
@@ -103,6 +103,11 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
         if (const IniFile::Entry* e = ini.find("FIRTP", "ROBUST")) parse_robust(e->value, m.tuning);
     } catch (const ConfigError& error) {
         fail(ini, *ini.find("FIRTP", "ROBUST"), error.what());
+    }
+    if (const auto blocks = ini.number("FIRTP", "MAX_PROGRAM_BLOCKS")) {
+        if (*blocks != std::floor(*blocks) || *blocks < 1 || *blocks > 1e15)  // 1e15: exact in a double
+            fail(ini, *ini.find("FIRTP", "MAX_PROGRAM_BLOCKS"), "must be a whole number from 1 to 1e15");
+        m.max_program_blocks = static_cast<std::size_t>(*blocks);
     }
     if (const auto tol = positive(ini, "FIRTP", "TOLERANCE")) m.default_tolerance = *tol;
     if (const auto chord = positive(ini, "FIRTP", "ARC_CHORD_TOLERANCE")) m.arc_chord_tolerance = *chord;

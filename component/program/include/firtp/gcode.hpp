@@ -33,6 +33,9 @@
 // the cap then uses); the last chord ends as the arc does. Every chord carries the arc's line.
 //
 // G64 Q (LinuxCNC's naive-CAM merging) is accepted and ignored: firtp plans every segment.
+//
+// The program is kept whole in memory: more than machine.max_program_blocks blocks (chords
+// included) is an error at the line that goes beyond, before its blocks are made.
 #pragma once
 
 #include <firtp/machine.hpp>

@@ -5,11 +5,17 @@
 #include <firtp/mode_tuning.hpp>
 #include <firtp/parameters.hpp>
 
+#include <cstddef>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 namespace firtp {
+
+// Blocks a program may expand to (an arc: one a chord) unless [FIRTP]MAX_PROGRAM_BLOCKS says
+// otherwise: 10x the 10^6-block programs the benchmarks plan. 112 bytes a block: 1.1 GB, 1.8 GB
+// peak (measured) while the vector grows.
+constexpr std::size_t default_max_program_blocks = 10'000'000;
 
 struct MachineConfig {
     double period = 0.001;                  // [EMCMOT]SERVO_PERIOD (ns in the INI)
@@ -22,6 +28,7 @@ struct MachineConfig {
     double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
     double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
     double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: share of a and j limits kept for override ramps
+    std::size_t max_program_blocks = default_max_program_blocks;  // [FIRTP]MAX_PROGRAM_BLOCKS (whole, >= 1)
 
     // Untuned without modes: given times, else T1 = max v/a, T2 = max a/j (filter_times_from_limits).
     // With modes: tuned to them at the smallest delay, those times as lower bounds (tune_filter_times).
