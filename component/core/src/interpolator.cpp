@@ -1,5 +1,7 @@
 #include <firtp/interpolator.hpp>
 
+#include <cmath>
+
 namespace firtp {
 
 Interpolator::Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start,
@@ -13,6 +15,21 @@ void Interpolator::reset(const AxisVector& position) {
     line_ = 0;
     aborting_ = false;
     flushed_ = false;
+}
+
+void Interpolator::brake_from(const AxisVector& position, const AxisVector& velocity) {
+    const double td = chain_->delay();
+    reset(position - velocity * (0.5 * td));  // S(Td) = 1/2 of a pulse of width Td
+    PlannedBlock b;
+    b.tv = td;
+    b.delta = velocity * td;
+    b.end = position + velocity * (0.5 * td);
+    const double start = static_cast<double>(clock_tick_) + clock_fraction_ - td / period_;  // periods
+    b.start_tick = static_cast<std::int64_t>(std::floor(start));
+    b.start_offset = (start - static_cast<double>(b.start_tick)) * period_;
+    push(b);
+    scale_.set_target(1.0);
+    scale_.snap();
 }
 
 bool Interpolator::push(const PlannedBlock& block) {

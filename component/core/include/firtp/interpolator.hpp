@@ -40,6 +40,11 @@ public:
     // Non-real-time setup: rest at `position`, queue empty, clock kept.
     void reset(const AxisVector& position);
 
+    // The axes are at `position` moving at `velocity` (found so at a start): drop the queue and
+    // continue through `position` at that velocity, then stop through the chain as if a pulse of
+    // width Td had run for Td already (braking.hpp); rest at braking_rest(). Rate 1 at once.
+    void brake_from(const AxisVector& position, const AxisVector& velocity);
+
     bool push(const PlannedBlock& block);  // false when full; nothing changes then
     void tick(AxisState& out);             // state at the current clock, then one period on
 
