@@ -1,6 +1,7 @@
 #include "component_core.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace firtp {
@@ -16,6 +17,8 @@ ComponentSettings checked(const ComponentSettings& s) {
     if (const char* why = validate_rate(s.planner); *why) throw std::invalid_argument(why);
     if (const char* why = validate(s.planner.filters); *why) throw std::invalid_argument(why);
     if (const char* why = validate_window(s.planner.filters, s.planner.period); *why) throw std::invalid_argument(why);
+    if (!(s.brake_speed >= 0.0 && std::isfinite(s.brake_speed)))
+        throw std::invalid_argument("the brake speed must be a finite speed >= 0");
     return s;
 }
 
@@ -29,11 +32,11 @@ bool next_record(BlockSource& source, stream::BlockRecord& record) {
 ComponentCore::ComponentCore(const ComponentSettings& settings)
     : settings_(checked(settings)), chain_(settings.planner.filters),
       interpolator_(chain_, settings.planner.period, settings.queue, AxisVector::Zero(), rate_limits(settings.planner)),
-      planner_(settings.planner, chain_, AxisVector::Zero()) {}
+      planner_(settings.planner, chain_, AxisVector::Zero()), braking_(braking_peaks(chain_)) {}
 
 void ComponentCore::fail(ComponentError error) {
     error_ = error;
-    halted_ = true;
+    halted_ = unchecked_halted_ = true;
     ++rejected_;
     if (!interpolator_.idle()) {
         interpolator_.abort();  // stop on the path; the rest of the program must not run
@@ -45,7 +48,30 @@ void ComponentCore::drop_everything(const AxisVector& at) {
     interpolator_.reset(at);
     planner_.reset(at, interpolator_.now_tick());
     aborting_ = false;
-    halted_ = true;  // the interrupted program must not continue from here
+    halted_ = unchecked_halted_ = true;  // the interrupted program must not continue from here
+}
+
+AxisVector ComponentCore::feedback_position(const ComponentInputs& in) const {
+    AxisVector at = last_.position;  // a non-finite feedback keeps the last command
+    for (int a = 0; a < settings_.axes; ++a)
+        if (std::isfinite(in.position_feedback[a])) at[a] = in.position_feedback[a];
+    return at;
+}
+
+void ComponentCore::take_over(const ComponentInputs& in) {
+    const AxisVector at = feedback_position(in);
+    AxisVector velocity = AxisVector::Zero();
+    for (int a = 0; a < settings_.axes; ++a)
+        if (std::isfinite(in.velocity_feedback[a])) velocity[a] = in.velocity_feedback[a];
+    interpolator_.reset(at);
+    planner_.reset(at, interpolator_.now_tick());
+    unchecked_halted_ = false;  // enable rose: the operator's reset for blocks with seq 0
+    if (velocity.cwiseAbs().maxCoeff() > settings_.brake_speed) {
+        interpolator_.brake_from(at, velocity * braking_share(braking_, settings_.planner.limits, velocity));
+        braking_now_ = true;
+        error_ = ComponentError::stopped_from_feedback;
+        halted_ = unchecked_halted_ = true;  // whatever moved the axes must not go on here
+    }
 }
 
 bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) {
@@ -60,7 +86,7 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
         halted_ = false;
         error_ = ComponentError::none;
     }
-    if (halted_) {  // the rest of a program that was stopped
+    if (record.seq == 0 ? unchecked_halted_ : halted_) {  // the rest of a program that was stopped
         ++rejected_;
         return false;
     }
@@ -100,24 +126,30 @@ int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) 
 
 void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
-        if (enabled_) drop_everything(last_.position);  // drives are off: no deceleration, no queue
+        const AxisVector at = feedback_position(in);
+        if (enabled_ || !started_) drop_everything(at);  // drives are off: no deceleration, no queue
         enabled_ = false;
+        braking_now_ = false;
         if (refuse_inputs(in, source) > 0) error_ = ComponentError::not_enabled;
+        last_.position = at;  // follow the axes, so that enabling moves nothing
         last_.velocity.setZero();
         last_.acceleration.setZero();
         last_.jerk.setZero();
     } else {
+        if (!enabled_) take_over(in);
         enabled_ = true;
-        if (in.abort && !aborting_ && !interpolator_.idle()) {
+        if (in.abort && !aborting_ && !braking_now_ && !interpolator_.idle()) {
             interpolator_.abort();
             aborting_ = true;
         }
         const bool stopping = in.hold || in.abort || aborting_;
-        interpolator_.set_rate(stopping ? 0.0 : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
+        interpolator_.set_rate(braking_now_ ? 1.0
+                               : stopping   ? 0.0
+                                            : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
 
-        if (in.abort || aborting_) {  // the operator stopped this program: refuse the rest of it
+        if (in.abort || aborting_ || braking_now_) {  // refuse the rest of a stopped program
             refuse_inputs(in, source);
-            if (in.abort) halted_ = true;
+            if (in.abort) halted_ = unchecked_halted_ = true;
         } else {
             if (!in.strobe) {
                 ack_ = false;
@@ -143,7 +175,14 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             planner_.reset(interpolator_.rest_position(), interpolator_.now_tick());
             aborting_ = false;
         }
+        if (braking_now_ && interpolator_.idle()) {  // at rest: plan from there
+            planner_.reset(interpolator_.rest_position(), interpolator_.now_tick());
+            braking_now_ = false;
+        }
     }
+    if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset
+    abort_pin_ = in.abort;
+    started_ = true;
 
     out.state = last_;
     out.ack = ack_;
@@ -151,13 +190,12 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
     out.done = interpolator_.idle();
     out.queue_depth = static_cast<std::int32_t>(interpolator_.depth());
     out.queue_free = static_cast<std::int32_t>(interpolator_.free());
-    out.mode = !enabled_                 ? ComponentState::disabled
-               : aborting_               ? ComponentState::aborting
+    out.mode = !enabled_                   ? ComponentState::disabled
+               : aborting_ || braking_now_ ? ComponentState::aborting
+               : !interpolator_.idle()     ? (in.hold ? ComponentState::holding : ComponentState::moving)
                : halted_ && error_ != ComponentError::none && error_ != ComponentError::repeated
-                                         ? ComponentState::error
-               : interpolator_.idle()    ? ComponentState::idle
-               : in.hold                 ? ComponentState::holding
-                                         : ComponentState::moving;
+                                           ? ComponentState::error
+                                           : ComponentState::idle;
     out.error = error_;
     out.program = program_;
     out.next_seq = next_seq_;

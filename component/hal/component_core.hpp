@@ -6,10 +6,15 @@
 // when its velocity pulse starts (overlap Tk from its tolerance) and queues it. Every period the
 // interpolator evaluates the FIR chain for the queued blocks and drives the axis outputs.
 // Feed scale and hold scale the chain's clock; abort stops on the path and drops the queue;
-// disable freezes the outputs at once and drops everything (drives are off). A bad block stops
-// the program on the path and is reported: nothing after it runs, nothing runs twice.
+// disable drops everything at once (drives are off) and the outputs follow the position feedback,
+// so that enabling moves nothing. At the first period and when enable rises the component takes
+// over from the feedback: at rest there, or, if the axes move faster than brake_speed (a restart
+// while moving), it continues at their velocity and stops through the chain within the limits
+// (braking.hpp), reported as stopped_from_feedback. A bad block stops the program on the path and
+// is reported: nothing after it runs, nothing runs twice.
 #pragma once
 
+#include <firtp/braking.hpp>
 #include <firtp/interpolator.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/planner.hpp>
@@ -24,7 +29,8 @@ namespace firtp {
 // Values as in firtp_lcm::status_t.
 enum class ComponentState : std::int32_t { idle = 0, moving = 1, holding = 2, aborting = 3, error = 4, disabled = 5 };
 enum class ComponentError : std::int32_t {
-    none = 0, bad_value = 1, sequence_gap = 2, repeated = 3, queue_full = 4, bad_type = 5, not_enabled = 6, lost_state = 7
+    none = 0, bad_value = 1, sequence_gap = 2, repeated = 3, queue_full = 4, bad_type = 5, not_enabled = 6, lost_state = 7,
+    stopped_from_feedback = 8
 };
 
 struct ComponentSettings {
@@ -35,6 +41,7 @@ struct ComponentSettings {
     std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
     double default_tolerance = 0.05;     // for pin blocks whose tolerance is 0
+    double brake_speed = 1.0;            // feedback speed (units/s, any axis) that counts as moving at a start
 };
 
 struct ComponentInputs {
@@ -45,6 +52,8 @@ struct ComponentInputs {
     bool strobe = false;                 // pin block handshake
     stream::BlockRecord pin_block;
     std::int32_t pin_motion_type = 2;
+    AxisVector position_feedback = AxisVector::Zero();  // where the axes are (pos-fb)
+    AxisVector velocity_feedback = AxisVector::Zero();  // how fast they move (vel-fb)
 };
 
 struct ComponentOutputs {
@@ -70,6 +79,8 @@ struct BlockSource {
 class ComponentCore {
 public:
     explicit ComponentCore(const ComponentSettings& settings);  // throws std::invalid_argument (init only)
+    ComponentCore(const ComponentCore&) = delete;  // the interpolator and planner point at chain_
+    ComponentCore& operator=(const ComponentCore&) = delete;
 
     // One servo period; real-time: no allocation, locks, I/O or exceptions.
     void update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out);
@@ -82,15 +93,22 @@ private:
     int refuse_inputs(const ComponentInputs& in, BlockSource source);  // counts what it refused
     void fail(ComponentError error);
     void drop_everything(const AxisVector& at);
+    void take_over(const ComponentInputs& in);  // first period, or enable rose
+    AxisVector feedback_position(const ComponentInputs& in) const;
 
     ComponentSettings settings_;
     FirChain chain_;
     Interpolator interpolator_;
     Planner planner_;
+    BrakingPeaks braking_;
     AxisState last_{};
-    bool enabled_ = true;
+    bool started_ = false;
+    bool enabled_ = false;
     bool aborting_ = false;
+    bool braking_now_ = false;            // stopping from the feedback velocity
+    bool abort_pin_ = false;
     bool halted_ = false;                 // after a bad block: refuse the rest of that program
+    bool unchecked_halted_ = false;       // and blocks with seq 0, until enable rises or abort falls
     bool ack_ = false;
     ComponentError error_ = ComponentError::none;
     std::uint64_t program_ = 0;

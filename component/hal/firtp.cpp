@@ -3,15 +3,19 @@
 //   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
 //                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=0] [block_key=K]
 //                [state_key=K] [max_velocity=V,V,..] [max_acceleration=A,..] [max_jerk=J,..]
-//                [stream_depth=4096] [max_feed_override=1] [rate_reserve=0.2]
+//                [stream_depth=4096] [max_feed_override=1] [rate_reserve=0.2] [brake_speed=1]
 //   addf firtp.update servo-thread
 //
 // Principle of operation (see component_core.hpp): blocks come in through the firtp.block.*
 // pins with a strobe/ack handshake, or many per period through the hal_stream `block_key` that
 // the LCM bridge writes. Each is checked and planned when accepted; every period firtp.update
 // advances the FIR chain and drives firtp.axis.N.{pos,vel,acc}-cmd. Every period's axis state
-// also goes to the hal_stream `state_key` for recording. Filter times not given come from
-// nothing: give t1 (and t2 for two stages, ...) in seconds.
+// also goes to the hal_stream `state_key` for recording. While firtp.enable is off the outputs
+// follow firtp.axis.N.pos-fb; when it rises, and at the first period, the component starts from
+// the feedback, and brakes within the limits from firtp.axis.N.vel-fb if the axes move (a restart
+// while moving). Connect the feedback as LinuxCNC's joint.N.motor-pos-fb; in a simulation, net
+// pos-cmd to pos-fb. Filter times not given come from nothing: give t1 (and t2 for two stages, ...)
+// in seconds.
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
@@ -76,6 +80,8 @@ static char* rate_reserve = nullptr;
 RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk limits kept for override and hold ramps (0.2)");
 static int stream_depth = 4096;
 RTAPI_MP_INT(stream_depth, "records each stream holds");
+static char* brake_speed = nullptr;
+RTAPI_MP_STRING(brake_speed, "vel-fb speed, units/s, above which a start or enable brakes from the feedback (1)");
 
 namespace {
 
@@ -83,6 +89,8 @@ struct AxisPins {
     hal_float_t* pos_cmd;  // out: commanded position
     hal_float_t* vel_cmd;  // out: commanded velocity
     hal_float_t* acc_cmd;  // out: commanded acceleration
+    hal_float_t* pos_fb;   // in: actual position, followed while disabled
+    hal_float_t* vel_fb;   // in: actual velocity, braked from at a start while moving
 };
 
 struct Pins {
@@ -154,6 +162,10 @@ void update(void*, long) {
     in.pin_block.program = pin::get(pins->block_program);
     in.pin_block.seq = pin::get(pins->block_seq);
     in.pin_motion_type = pin::get(pins->block_motion_type);
+    for (int a = 0; a < axes; ++a) {
+        in.position_feedback[a] = pin::get(pins->axis[a].pos_fb);
+        in.velocity_feedback[a] = pin::get(pins->axis[a].vel_fb);
+    }
 
     firtp::ComponentOutputs out;
     core->update(in, {has_block_stream ? read_block : nullptr, nullptr}, out);
@@ -224,6 +236,8 @@ int make_pins() {
         r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].pos_cmd, comp_id, "firtp.axis.%d.pos-cmd", a);
         r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].vel_cmd, comp_id, "firtp.axis.%d.vel-cmd", a);
         r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].acc_cmd, comp_id, "firtp.axis.%d.acc-cmd", a);
+        r = r ? r : hal_pin_float_newf(HAL_IN, &pins->axis[a].pos_fb, comp_id, "firtp.axis.%d.pos-fb", a);
+        r = r ? r : hal_pin_float_newf(HAL_IN, &pins->axis[a].vel_fb, comp_id, "firtp.axis.%d.vel-fb", a);
     }
     for (int a = 0; a < firtp::max_axes && r == 0; ++a)  // unused axes keep their storage, set to 0
         if (a < axes) r = hal_pin_float_newf(HAL_IN, &pins->block_target[a], comp_id, "firtp.block.target.%d", a);
@@ -301,6 +315,8 @@ firtp::ComponentSettings settings_from_parameters() {
     s.planner.rate_reserve = number("rate_reserve", rate_reserve, 0.2);
     if (!(s.planner.rate_reserve > 0.0 && s.planner.rate_reserve < 1.0))
         refuse("rate_reserve", rate_reserve, "must lie between 0 and 1 (a share of the acceleration and jerk limits)");
+    s.brake_speed = number("brake_speed", brake_speed, 1.0);
+    if (!(s.brake_speed >= 0.0)) refuse("brake_speed", brake_speed, "must be zero or positive, units/s");
     return s;
 }
 

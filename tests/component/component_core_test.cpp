@@ -1,5 +1,6 @@
 // The component's real-time logic: blocks through the stream or the pins, sequence numbers,
 // errors that stop the program on the path, abort, disable.
+#include "support/limits.hpp"
 #include "support/reference.hpp"
 
 #include <component_core.hpp>
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <deque>
 
 using namespace firtp;
@@ -67,15 +69,21 @@ stream::BlockRecord streamed(const stream::BlockRecord& r) {
 }
 
 struct Servo {
-    ComponentCore core{settings()};
+    explicit Servo(const ComponentSettings& s = settings()) : core(s) {}
+    ComponentCore core;
     FakeStream stream;
     ComponentInputs in;
     ComponentOutputs out;
     std::vector<AxisState> samples;
+    bool ideal_drive = true;  // the feedback is the last command
     void ticks(int n) {
         for (int k = 0; k < n; ++k) {
             core.update(in, stream.source(), out);
             samples.push_back(out.state);
+            if (ideal_drive) {
+                in.position_feedback = out.state.position;
+                in.velocity_feedback = out.state.velocity;
+            }
         }
     }
 };
@@ -204,7 +212,7 @@ TEST(ComponentCore, AbortStopsOnThePathAndDropsTheQueue) {
     EXPECT_EQ(run.samples.back().position, xyz(0, 0));
 }
 
-TEST(ComponentCore, DisableFreezesAtOnceAndDropsEverything) {
+TEST(ComponentCore, DisableStopsAtOnceAndDropsEverything) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
@@ -240,4 +248,118 @@ TEST(ComponentCore, ProgramIdsAndSeqsKeepAll64BitsThroughTheStream) {
     EXPECT_EQ(run.out.next_seq, 2u);
     EXPECT_EQ(run.out.rejected, 0u);
     EXPECT_EQ(run.samples.back().position, blocks[1].target);
+}
+
+// Drives off: the axes may be pushed by hand; the outputs follow them, so enabling moves nothing.
+TEST(ComponentCore, WhileDisabledTheOutputsFollowTheFeedbackAndEnablingMovesNothing) {
+    Servo run;
+    const std::vector<Block> blocks = diamond();
+    for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
+    run.ticks(300);
+    run.in.enable = false;
+    run.ideal_drive = false;
+    run.in.velocity_feedback = AxisVector::Zero();  // the axes came to rest
+    for (int k = 0; k < 100; ++k) {
+        run.in.position_feedback = xyz(3.0 + 0.01 * k, -2.0, 0.5);
+        run.ticks(1);
+        ASSERT_EQ(run.samples.back().position, run.in.position_feedback);
+        ASSERT_EQ(run.samples.back().velocity, AxisVector::Zero());
+    }
+    EXPECT_EQ(run.out.mode, ComponentState::disabled);
+    run.in.enable = true;
+    const AxisVector at = run.in.position_feedback;
+    run.ticks(200);
+    for (std::size_t k = run.samples.size() - 200; k < run.samples.size(); ++k) ASSERT_EQ(run.samples[k].position, at);
+    EXPECT_EQ(run.out.mode, ComponentState::idle);
+    // The interrupted program stays refused; a new one runs from where the axes are.
+    run.stream.records.push_back(record(blocks[1], 1, 2));
+    run.stream.records.push_back(record(blocks[0], 2, 1));
+    run.ticks(1000);
+    EXPECT_EQ(run.samples.back().position, blocks[0].target);
+    EXPECT_EQ(run.out.program, 2u);
+}
+
+// Pin blocks with seq 0 carry no program: after a disable the enable's rise lets them run again
+// (before, a disable refused every later seq-0 block for good).
+TEST(ComponentCore, PinBlocksRunAgainOnceEnableRises) {
+    Servo run;
+    run.in.enable = false;  // LinuxCNC starts with the machine off
+    run.ticks(10);
+    run.in.enable = true;
+    run.in.strobe = true;
+    run.in.pin_block.block = diamond()[0];
+    run.ticks(700);
+    EXPECT_EQ(run.samples.back().position, diamond()[0].target);
+    EXPECT_EQ(run.out.rejected, 0u);
+}
+
+namespace {
+
+ComponentSettings limited() {
+    ComponentSettings s = settings();
+    s.planner.limits = test::uniform_limits(250.0, 2000.0, 40000.0);
+    return s;
+}
+
+// The component's first period finds the axes moving at `v` through `p` (it restarted).
+void moving_at(Servo& run, const AxisVector& p, const AxisVector& v) {
+    run.in.position_feedback = p;
+    run.in.velocity_feedback = v;
+}
+
+}  // namespace
+
+TEST(ComponentCore, StartingWhileTheAxesMoveBrakesFromTheFeedbackWithinTheLimits) {
+    const AxisVector p = xyz(40.0, -12.0, 3.0), v = xyz(120.0, -80.0, 0.0);
+    Servo run(limited());
+    moving_at(run, p, v);
+    run.stream.records.push_back(record(diamond()[0], 9, 1));  // a block sent meanwhile is refused
+    run.ticks(1);
+    EXPECT_LT((run.samples[0].position - p).cwiseAbs().maxCoeff(), 1e-12);  // no jump
+    EXPECT_LT((run.samples[0].velocity - v).cwiseAbs().maxCoeff(), 1e-9);   // nor a velocity step
+    EXPECT_EQ(run.out.mode, ComponentState::aborting);
+    EXPECT_EQ(run.out.error, ComponentError::stopped_from_feedback);
+    run.ticks(400);
+    const FirChain chain(settings().planner.filters);
+    EXPECT_EQ(run.samples.back().position, braking_rest(chain, p, v));
+    EXPECT_EQ(run.samples.back().velocity, AxisVector::Zero());
+    EXPECT_EQ(run.out.mode, ComponentState::error);
+    EXPECT_EQ(run.out.rejected, 1u);
+    EXPECT_LE(test::worst_ratio(run.samples, limited().planner.limits), 1.0);
+    std::size_t stop_ticks = 0;
+    while (run.samples[stop_ticks].velocity != AxisVector::Zero()) ++stop_ticks;
+    // The next program plans from the rest position.
+    Block next = diamond()[1];
+    run.stream.records.push_back(record(next, 10, 1));
+    run.ticks(1500);
+    EXPECT_EQ(run.samples.back().position, next.target);
+    EXPECT_EQ(run.out.mode, ComponentState::idle);
+    EXPECT_EQ(run.out.error, ComponentError::none);
+    EXPECT_LE(test::worst_ratio(run.samples, limited().planner.limits), 1.0);
+    std::printf("braked from 144 mm/s in %.3f s (Td %.3f s), %.2f mm on\n", 0.001 * static_cast<double>(stop_ticks),
+                chain.delay(), (braking_rest(chain, p, v) - p).norm());
+}
+
+// Faster than the machine can stop through the chain: the share that it can stop, within limits.
+TEST(ComponentCore, TooFastAFeedbackVelocityIsBrakedFromTheShareTheLimitsAllow) {
+    const AxisVector p = xyz(0.0, 0.0, 0.0), v = xyz(400.0, 0.0, 0.0);  // max_velocity 250
+    Servo run(limited());
+    moving_at(run, p, v);
+    run.ticks(400);
+    const std::vector<AxisState>& samples = run.samples;
+    EXPECT_NEAR(samples[0].velocity[0], 250.0, 1e-9);
+    EXPECT_LE(test::worst_ratio(samples, limited().planner.limits), 1.0);
+    EXPECT_EQ(samples.back().velocity, AxisVector::Zero());
+}
+
+// Encoder noise below brake_speed: a start at rest, exactly on the feedback.
+TEST(ComponentCore, FeedbackSlowerThanTheBrakeSpeedStartsAtRest) {
+    const AxisVector p = xyz(1.25, 2.5, -3.75);
+    Servo run(limited());
+    moving_at(run, p, xyz(0.9, -0.9, 0.0));
+    run.ideal_drive = false;
+    run.ticks(50);
+    for (const AxisState& s : run.samples) ASSERT_EQ(s.position, p);
+    EXPECT_EQ(run.out.mode, ComponentState::idle);
+    EXPECT_EQ(run.out.error, ComponentError::none);
 }

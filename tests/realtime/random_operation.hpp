@@ -151,6 +151,8 @@ public:
     void after_tick(const ComponentOutputs& out, const StreamRing& ring) {
         ++stats_.ticks;
         const AxisState& s = out.state;
+        in_.position_feedback = s.position;  // an ideal drive: the axes are where commanded
+        in_.velocity_feedback = s.velocity;
         for (int a = 0; a < settings_.axes; ++a) {
             if (!std::isfinite(s.position[a]) || !std::isfinite(s.velocity[a]) || !std::isfinite(s.acceleration[a]))
                 return violation("tick %lld: non-finite output", static_cast<long long>(stats_.ticks));
