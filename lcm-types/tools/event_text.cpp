@@ -1,9 +1,6 @@
 #include "event_text.hpp"
 
-#include <firtp_lcm/axis_state_t.hpp>
-#include <firtp_lcm/block_t.hpp>
-#include <firtp_lcm/control_t.hpp>
-#include <firtp_lcm/status_t.hpp>
+#include <firtp/messages.hpp>
 
 #include <charconv>
 #include <concepts>
@@ -82,10 +79,17 @@ std::string text(const firtp_lcm::control_t& m) {
 std::int64_t program_of(const firtp_lcm::block_t& m) { return m.program; }
 template <class Message> std::int64_t program_of(const Message&) { return 0; }
 
-// Decodes as Message when the fingerprint matches (decode checks it first).
+// Decodes as Message when the fingerprint matches (decode checks it first); a message whose crc
+// does not match is shown, marked, and given no seq key (its fields are not to be trusted).
 template <class Message> std::optional<EventText> try_decode(const void* data, int size) {
-    Message message;
-    if (message.decode(data, 0, size) < 0) return std::nullopt;
+    const auto received = messages::receive<Message>(data, static_cast<std::size_t>(size));
+    if (!received.decoded) return std::nullopt;
+    const Message& message = received.message;
+    if (received.problem) {  // "corrupted: CRC mismatch (...)" -> " CORRUPTED: CRC mismatch (...)"
+        const std::string& problem = *received.problem;
+        const std::string why = problem.rfind("corrupted: ", 0) == 0 ? problem.substr(11) : problem;
+        return EventText{text(message) + " CORRUPTED: " + why, std::nullopt, true};
+    }
     return EventText{text(message), SeqKey{program_of(message), message.seq}};
 }
 

@@ -1,4 +1,5 @@
-// One log event as one line of text: the decoded fields of the firtp_lcm types.
+// One log event as one line of text: the decoded fields of the firtp_lcm types, and whether the
+// message is intact (its crc).
 #pragma once
 
 #include <cstdint>
@@ -14,8 +15,10 @@ struct SeqKey {
 };
 
 struct EventText {
-    std::string text;            // "block_t seq=3 program=7 ...", or "? 42 bytes" when unknown
-    std::optional<SeqKey> key;   // empty when the type is unknown
+    std::string text;            // "block_t seq=3 program=7 ...", or "? 42 bytes" when unknown; a
+                                 // corrupted one ends " CORRUPTED: CRC mismatch (crc 0x..., computed 0x...)"
+    std::optional<SeqKey> key;   // empty when the type is unknown or the message corrupted
+    bool corrupted = false;      // decodes as a firtp_lcm type, but its crc does not match
 };
 
 EventText describe(const void* data, int size);

@@ -1,5 +1,6 @@
 // firtp-lcm-dump: reads a .lcmlog (lcm-logger) and prints one line per event, or with --count a
-// summary per channel with seq gaps. LCM 1.3.1 ships no command-line spy.
+// summary per channel with seq gaps. Messages whose crc does not match are marked CORRUPTED (and
+// counted apart). LCM 1.3.1 ships no command-line spy.
 #include "event_text.hpp"
 #include "seq_summary.hpp"
 
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
         if (!std::regex_match(event->channel, channel)) continue;
         const firtp::dump::EventText line = firtp::dump::describe(event->data, event->datalen);
         if (options.count)
-            summary.add(event->channel, line.key);
+            summary.add(event->channel, line);
         else
             std::cout << event->timestamp << ' ' << event->channel << ' ' << line.text << '\n';
     }

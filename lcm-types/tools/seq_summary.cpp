@@ -40,9 +40,14 @@ std::string range(std::int64_t first, std::int64_t last) {
 
 }  // namespace
 
-void SeqSummary::add(const std::string& channel, const std::optional<SeqKey>& key) {
+void SeqSummary::add(const std::string& channel, const EventText& event) {
     Channel& c = channels_[channel];
     ++c.events;
+    if (event.corrupted) {
+        ++c.corrupted;
+        return;
+    }
+    const std::optional<SeqKey>& key = event.key;
     if (!key) {
         ++c.unknown;
         return;
@@ -59,6 +64,7 @@ void SeqSummary::add(const std::string& channel, const std::optional<SeqKey>& ke
 void SeqSummary::print(std::ostream& out) const {
     for (const auto& [name, c] : channels_) {
         if (c.unknown > 0) out << name << " events=" << c.unknown << " unknown type\n";
+        if (c.corrupted > 0) out << name << " events=" << c.corrupted << " corrupted (CRC mismatch)\n";
         for (const auto& [program, s] : c.programs) {
             out << name;
             if (program != 0) out << " program=" << program;

@@ -13,7 +13,7 @@ namespace firtp::dump {
 
 class SeqSummary {
 public:
-    void add(const std::string& channel, const std::optional<SeqKey>& key);
+    void add(const std::string& channel, const EventText& event);
     void print(std::ostream& out) const;
 
 private:
@@ -27,6 +27,7 @@ private:
     struct Channel {
         std::int64_t events = 0;
         std::int64_t unknown = 0;                    // events of no firtp_lcm type
+        std::int64_t corrupted = 0;                  // firtp_lcm messages whose crc does not match
         std::map<std::int64_t, Stream> programs;     // program 0 for the types without one
     };
     std::map<std::string, Channel> channels_;

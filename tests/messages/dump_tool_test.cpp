@@ -27,10 +27,20 @@ ToolRun dump(const std::string& arguments) {
     return run;
 }
 
+void write_bytes(lcm::LogFile& log, const std::string& channel, std::int64_t timestamp,
+                 std::vector<unsigned char>& bytes) {
+    lcm::LogEvent event{};
+    event.timestamp = timestamp;
+    event.channel = channel;
+    event.datalen = static_cast<std::int32_t>(bytes.size());
+    event.data = bytes.data();
+    log.writeEvent(&event);
+}
+
+// Sealed, as every sender writes them.
 template <class Message> void write(lcm::LogFile& log, const std::string& channel, std::int64_t timestamp,
-                                    const Message& message) {
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(message.getEncodedSize()));
-    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+                                    Message message) {
+    std::vector<unsigned char> bytes = seal_encoded(message);
     lcm::LogEvent event{};
     event.timestamp = timestamp;
     event.channel = channel;
@@ -120,22 +130,41 @@ TEST(DumpToolErrors, CorruptStatusIsShownNotFatal) {
         firtp_lcm::status_t status{};
         status.seq = 1;
         status.error_text = "x";
-        std::vector<unsigned char> bytes(static_cast<std::size_t>(status.getEncodedSize()));
-        status.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+        std::vector<unsigned char> bytes = seal_encoded(status);
         constexpr std::size_t length_at = 8 + 5 * 8 + 3 * 4 + 1 + 8 + 4;
         for (int i = 0; i < 4; ++i) bytes[length_at + i] = 0;
-        lcm::LogEvent event{};
-        event.timestamp = 1;
-        event.channel = status_channel;
-        event.datalen = static_cast<std::int32_t>(bytes.size());
-        event.data = bytes.data();
-        log.writeEvent(&event);
+        write_bytes(log, status_channel, 1, bytes);
         write(log, control_channel, 2, firtp_lcm::control_t{});
     }
     const ToolRun run = dump(file.string());
     ASSERT_EQ(run.code, 0) << run.out;
-    EXPECT_TRUE(contains(run.out, "1 FIRTP_STATUS ? 87 bytes\n")) << run.out;
+    EXPECT_TRUE(contains(run.out, "1 FIRTP_STATUS ? 99 bytes\n")) << run.out;
     EXPECT_TRUE(contains(run.out, "2 FIRTP_CONTROL control_t seq=0")) << run.out;
+}
+
+// A block damaged after it was sealed (a bit of its X target) still decodes: the tool shows it,
+// marked, and --count keeps it out of the seq statistics.
+TEST(DumpToolErrors, CorruptedMessageIsMarked) {
+    test::TempFile file{".lcmlog"};
+    {
+        lcm::LogFile log(file.string(), "w");
+        ASSERT_TRUE(log.good());
+        firtp_lcm::block_t block = test::sample_message(3);
+        std::vector<unsigned char> bytes = seal_encoded(block);
+        bytes[8 + 8 + 8 + 8 + 4 + 1 + 1 + 7] ^= 0x01;  // the low bit of target X
+        write_bytes(log, block_channel, 1, bytes);
+        write(log, block_channel, 2, test::sample_message(4));
+    }
+    ToolRun run = dump(file.string());
+    ASSERT_EQ(run.code, 0) << run.out;
+    EXPECT_TRUE(contains(run.out, "1 FIRTP_BLOCK block_t seq=3 program=7 line=40 target=(-2.5000000000000004,-1,0.5) "
+                                  "feed=25 tolerance=0.02 CORRUPTED: CRC mismatch (crc 0x")) << run.out;
+    EXPECT_TRUE(contains(run.out, "2 FIRTP_BLOCK block_t seq=4 program=7 line=40 target=(-2.5,-1,0.5) feed=25 "
+                                  "tolerance=0.02\n")) << run.out;
+    run = dump("--count " + file.string());
+    EXPECT_EQ(run.out,
+              "FIRTP_BLOCK events=1 corrupted (CRC mismatch)\n"
+              "FIRTP_BLOCK program=7 events=1 seq=4 missing=0 repeated=0 reordered=0\n");
 }
 
 TEST_F(DumpTool, ChannelFilterMatchesWholeName) {

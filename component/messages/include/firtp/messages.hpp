@@ -9,10 +9,12 @@
 #include <firtp_lcm/status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace firtp::messages {
 
@@ -45,6 +47,73 @@ std::string describe(const firtp_lcm::block_t& message);
 
 // Wall-clock microseconds since the epoch, LCM's utime convention.
 std::int64_t now_utime();
+
+// ---- Integrity, end to end (LCM has no checksum) ----
+// Every firtp_lcm type ends with `int32_t crc`: the CRC-32 (IEEE 802.3, as zlib.crc32 and
+// boost::crc_32_type) of its LCM encoding without the last 4 bytes (the 8-byte fingerprint and
+// every other field); those last 4 bytes are the crc, big-endian (block_t.lcm says it in full).
+// Senders seal (or publish(), which seals); receivers take the bytes as received to receive(),
+// which checks the crc before it decodes.
+
+// CRC-32 of `size` bytes.
+std::uint32_t crc32(const void* data, std::size_t size);
+
+// Encoded bytes as received: at least fingerprint and crc, and the last 4 bytes (big-endian) equal
+// the CRC-32 of the others.
+bool intact(const void* data, std::size_t size);
+
+// "corrupted: CRC mismatch (crc 0x0badf00d, computed 0x12345678)", or for fewer than 12 bytes
+// "corrupted: 5 bytes, too short for a firtp_lcm message"; empty when intact.
+std::optional<std::string> integrity_problem(const void* data, std::size_t size);
+
+// Sets message.crc and returns the message's encoding (with that crc).
+template <class Message> std::vector<std::uint8_t> seal_encoded(Message& message) {
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(message.getEncodedSize()));
+    const int n = static_cast<int>(bytes.size());
+    message.crc = 0;
+    message.encode(bytes.data(), 0, n);
+    const std::uint32_t crc = crc32(bytes.data(), bytes.size() - 4);
+    message.crc = static_cast<std::int32_t>(crc);
+    for (std::size_t i = 0; i < 4; ++i) bytes[bytes.size() - 4 + i] = static_cast<std::uint8_t>(crc >> (24 - 8 * i));
+    return bytes;
+}
+
+// Sets message.crc: call after the last change to any other field, before it is sent or written.
+template <class Message> void seal(Message& message) { (void)seal_encoded(message); }
+
+// The message's encoding, as it is now, is intact (its crc matches its fields).
+template <class Message> bool intact(const Message& message) {
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(message.getEncodedSize()));
+    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    return intact(bytes.data(), bytes.size());
+}
+
+// Seals the message and publishes that encoding; LCM's publish result (0 on success).
+template <class Message> int publish(lcm::LCM& lcm, const std::string& channel, Message& message) {
+    const std::vector<std::uint8_t> bytes = seal_encoded(message);
+    return lcm.publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
+}
+
+// For intact bytes that are not exactly one message of the type:
+// "intact, but not a block_t of this version (120 bytes, fingerprint 0x0123456789abcdef)".
+std::string not_this_type(const void* data, std::size_t size, const char* type);
+
+template <class Message> struct Received {
+    Message message{};                   // decoded; to be trusted only when there is no problem
+    bool decoded = false;                // the bytes decode as a Message (if corrupted: only to name it)
+    std::optional<std::string> problem;  // empty: intact, and exactly one Message
+};
+
+// What every receiver does first with the bytes LCM delivered: the crc, then the decode. The
+// problem is integrity_problem()'s, or not_this_type()'s for intact bytes of another type.
+template <class Message> Received<Message> receive(const void* data, std::size_t size) {
+    Received<Message> r;
+    r.problem = integrity_problem(data, size);
+    const int n = size > 0x7fffffff ? -1 : static_cast<int>(size);
+    r.decoded = n >= 0 && r.message.decode(data, 0, n) == n;
+    if (!r.problem && !r.decoded) r.problem = not_this_type(data, size, Message::getTypeName());
+    return r;
+}
 
 // Valid message -> block (call validate first).
 Block to_block(const firtp_lcm::block_t& message);
