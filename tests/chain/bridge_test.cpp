@@ -1,11 +1,19 @@
-// LCM messages into the real component through firtp-bridge: bad values, gaps, repeats and
-// reordering are reported in FIRTP_STATUS, and no block runs twice or is dropped silently.
+// LCM messages into the real component through firtp-bridge: bad values, gaps, repeats,
+// reordering and corrupted messages (their crc) are reported in FIRTP_STATUS, and no block runs
+// twice or is dropped silently.
 #include "chain_fixture.hpp"
+
+#include <firtp/host.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
+#include <vector>
 
 using namespace firtp;
 using test::block_message;
@@ -110,7 +118,7 @@ TEST(Bridge, ControlOfANewHostSessionTakesEffectAndOldMessagesDoNot) {
     stale.session = 2;
     stale.seq = 1;
     stale.feed_scale = 0.1;
-    chain.lcm->publish(messages::control_channel, &stale);
+    messages::publish(*chain.lcm, messages::control_channel, stale);
     chain.run(2);
     EXPECT_EQ(chain.status().feed_scale, 1.0);
 }
@@ -150,4 +158,212 @@ TEST(Bridge, AbortDropsTheQueueAndANewProgramStartsFromThere) {
     chain.run(600);
     EXPECT_EQ(chain.position()[0], 0.0);
     EXPECT_EQ(chain.position()[1], 0.0);
+}
+
+namespace {
+
+// A sealed block damaged in transit: its X target's lowest exponent bit flipped (10 -> 20), type
+// hash and length intact, so it still decodes as a valid block.
+std::vector<std::uint8_t> damaged_block(firtp_lcm::block_t block) {
+    std::vector<std::uint8_t> bytes = messages::seal_encoded(block);
+    constexpr std::size_t target_x = 8 + 8 + 8 + 8 + 4 + 1 + 1;
+    bytes[target_x + 1] ^= 0x10;
+    return bytes;
+}
+
+std::string crc_text(const std::vector<std::uint8_t>& bytes) {
+    const std::size_t n = bytes.size();
+    const std::uint32_t sent = std::uint32_t{bytes[n - 4]} << 24 | std::uint32_t{bytes[n - 3]} << 16 |
+                               std::uint32_t{bytes[n - 2]} << 8 | bytes[n - 1];
+    char text[80];
+    std::snprintf(text, sizeof text, "(crc 0x%08x, computed 0x%08x)", sent, messages::crc32(bytes.data(), n - 4));
+    return text;
+}
+
+}  // namespace
+
+// A block whose bytes were damaged on the way (it still decodes, as a block to X 20 instead of
+// 10) is refused before anything else, reported naming it and the crc, and not accepted: next_seq
+// stays, so the block after it is a gap, exactly as if it had been lost; the resent block runs,
+// once, to its real target.
+TEST(Bridge, CorruptedBlockIsRefusedLikeALostOneAndTheResendRunsOnce) {
+    test::Chain chain(machine());
+    chain.publish(block_message(10, 0, 5, 1, 11));
+    const std::vector<std::uint8_t> damaged = damaged_block(block_message(10, 10, 5, 2, 12));
+    {
+        firtp_lcm::block_t as_decoded;
+        ASSERT_EQ(as_decoded.decode(damaged.data(), 0, static_cast<int>(damaged.size())), static_cast<int>(damaged.size()));
+        ASSERT_EQ(as_decoded.target[0], 20.0);
+        ASSERT_FALSE(messages::validate(as_decoded));  // to LCM and validate() a good block
+    }
+    chain.publish_bytes(messages::block_channel, damaged);
+    chain.run(2);
+    const firtp_lcm::status_t refused = chain.status();
+    EXPECT_EQ(refused.error_code, firtp_lcm::status_t::ERROR_CORRUPTED);
+    EXPECT_EQ(refused.error_text,
+              "block seq 2 (line 12): corrupted: CRC mismatch " + crc_text(damaged) + "; refused, expected seq 2");
+    EXPECT_EQ(refused.next_seq, 2);  // not accepted
+    EXPECT_EQ(refused.rejected, 1);
+    EXPECT_EQ(refused.corrupted, 1);
+    EXPECT_NE(refused.state, firtp_lcm::status_t::ERROR);  // not a fault: the resend repairs it
+    chain.publish(block_message(0, 10, 5, 3, 13));
+    chain.run(2);
+    EXPECT_EQ(chain.status().error_code, firtp_lcm::status_t::ERROR_SEQUENCE_GAP);  // as after a lost block
+    EXPECT_EQ(chain.status().next_seq, 2);
+    chain.publish(block_message(10, 10, 5, 2, 12));  // the resend
+    chain.publish(block_message(0, 10, 5, 3, 13));
+    chain.run(800);
+    EXPECT_EQ(chain.status().next_seq, 4);
+    EXPECT_EQ(chain.chain->bridge().blocks_forwarded(), 3);
+    EXPECT_EQ(chain.chain->bridge().messages_corrupted(), 1);
+    EXPECT_EQ(chain.position()[0], 0.0);
+    EXPECT_EQ(chain.position()[1], 10.0);
+    double max_x = 0.0;  // the damaged target (X 20) never ran
+    for (const auto& s : chain.states) max_x = std::max(max_x, s.position[0]);
+    EXPECT_LE(max_x, 10.0 + 1e-9);
+}
+
+// A control damaged on the way (feed override 0.5 -> 1.0 by one bit) is ignored, the override in
+// effect stays, and it is reported; the next intact one takes effect.
+TEST(Bridge, CorruptedControlIsIgnoredAndReported) {
+    test::Chain chain(machine());
+    firtp_lcm::control_t c{};
+    c.session = 1;
+    c.seq = 1;
+    c.feed_scale = 0.5;
+    std::vector<std::uint8_t> bytes = messages::seal_encoded(c);
+    constexpr std::size_t feed_scale = 8 + 8 + 8 + 8;
+    bytes[feed_scale + 1] ^= 0x10;  // 0x3FE0... -> 0x3FF0...: 1.0
+    chain.publish_bytes(messages::control_channel, bytes);
+    chain.run(2);
+    EXPECT_EQ(chain.status().feed_scale, 1.0);
+    EXPECT_EQ(chain.status().error_code, firtp_lcm::status_t::ERROR_CORRUPTED);
+    EXPECT_EQ(chain.status().error_text,
+              "control seq 1: corrupted: CRC mismatch " + crc_text(bytes) + "; ignored, the controls in effect stay");
+    EXPECT_EQ(chain.status().corrupted, 1);
+    EXPECT_EQ(chain.status().rejected, 0);  // not a block
+    chain.control(0.25, false, false);
+    chain.run(2);
+    EXPECT_EQ(chain.status().feed_scale, 0.25);
+}
+
+namespace {
+
+// Five blocks from the real host through a relay that damages the first copy of block `damaged_seq`
+// (its X target 10 -> 20: a bit flip that leaves a valid block); statuses and axis states back.
+struct HostRun {
+    test::Chain chain{machine()};
+    int copies = 0;  // of the damaged seq that passed the relay
+    host::Result result = host::Result::running;
+    host::Statistics statistics;
+    std::string error;
+    std::int64_t periods = 0;
+
+    explicit HostRun(std::int64_t damaged_seq) {
+        auto host_lcm = messages::open("memq://");
+        struct Relay {
+            HostRun* run;
+            lcm::LCM* to_host;
+            std::int64_t seq;
+            void down(const lcm::ReceiveBuffer* b, const std::string& channel) {
+                const auto* data = static_cast<const std::uint8_t*>(b->data);
+                std::vector<std::uint8_t> bytes(data, data + b->data_size);
+                const auto r = messages::receive<firtp_lcm::block_t>(bytes.data(), bytes.size());
+                if (channel == messages::block_channel && r.decoded && r.message.seq == seq && run->copies++ == 0)
+                    bytes[8 + 8 + 8 + 8 + 4 + 1 + 1 + 1] ^= 0x10;
+                run->chain.publish_bytes(channel.c_str(), bytes);
+            }
+            void up(const lcm::ReceiveBuffer* b, const std::string& channel) {
+                to_host->publish(channel, b->data, b->data_size);
+            }
+        } relay{this, host_lcm.get(), damaged_seq};
+        auto* down = host_lcm->subscribe("FIRTP_BLOCK|FIRTP_CONTROL", &Relay::down, &relay);
+        auto* up = chain.lcm->subscribe("FIRTP_STATUS|FIRTP_AXIS_STATE", &Relay::up, &relay);
+        messages::keep_everything(down);
+        messages::keep_everything(up);
+
+        Program program;
+        program.file = "corrupted.ngc";
+        for (int i = 1; i <= 5; ++i) {
+            Block b;
+            b.target[0] = i % 2 == 0 ? 10.0 : 0.0;  // seq 2 and 4 to X 10, their damaged copies to X 20
+            b.target[1] = 5.0 * i;
+            b.feed = 100.0;
+            b.tolerance = 0.05;
+            b.line = 10 + i;
+            program.blocks.push_back(b);
+        }
+        host::HostOptions options;
+        options.program_id = 9;
+        options.clock = [this] { return host::Clock::time_point(std::chrono::milliseconds(periods)); };
+        host::Host host(*host_lcm, program, options);
+        for (; periods < 20000 && host.result() == host::Result::running; ++periods) {
+            host.step();
+            chain.run(1);
+            while (host_lcm->handleTimeout(0) > 0) {
+            }
+        }
+        result = host.result();
+        statistics = host.statistics();
+        error = host.error();
+        chain.lcm->unsubscribe(up);
+    }
+    double max_abs_x() const {
+        double x = 0.0;
+        for (const auto& s : chain.states) x = std::max(x, std::abs(s.position[0]));
+        return x;
+    }
+    // The first period whose status shows `pred`, or -1.
+    template <class Pred> std::int64_t first_status(Pred pred) const {
+        for (const auto& s : chain.statuses)
+            if (pred(s)) return s.tick;
+        return -1;
+    }
+};
+
+}  // namespace
+
+// The real host's first copy of seq 2 is damaged on the way. The bridge refuses it (counted; its
+// report is then hidden behind the gaps of 3-5, as a lost block's would be), the host goes back
+// and resends: every block runs once, the damaged target never.
+TEST(Bridge, HostResendsACorruptedBlockOnceAndTheProgramCompletes) {
+    const HostRun run(2);
+    ASSERT_EQ(run.result, host::Result::done) << run.error;
+    EXPECT_EQ(run.copies, 2);  // the damaged copy and one resend
+    EXPECT_EQ(run.chain.chain->bridge().blocks_forwarded(), 5);
+    EXPECT_EQ(run.chain.chain->bridge().messages_corrupted(), 1);
+    EXPECT_EQ(run.chain.status().corrupted, 1);
+    EXPECT_EQ(run.chain.status().next_seq, 6);
+    EXPECT_EQ(run.statistics.corrupted_refused, 1);
+    EXPECT_EQ(run.statistics.go_backs, 1);
+    EXPECT_LE(run.max_abs_x(), 10.0 + 1e-9);  // X 20 never ran
+    EXPECT_EQ(run.chain.position()[0], 0.0);
+    EXPECT_EQ(run.chain.position()[1], 25.0);
+    std::printf("corrupted seq 2 through the host: %lld published for 5 (%lld go-backs), refused %lld, corrupted %lld\n",
+                static_cast<long long>(run.statistics.blocks_published), static_cast<long long>(run.statistics.go_backs),
+                static_cast<long long>(run.statistics.rejected), static_cast<long long>(run.statistics.corrupted_refused));
+}
+
+// The last block damaged: nothing hides the report, which names it; the host goes back at the
+// refusal (ERROR_CORRUPTED), not after its 500 ms resend timeout as for a lost last block.
+TEST(Bridge, CorruptedLastBlockIsNamedAndResentAtOnce) {
+    const HostRun run(5);
+    ASSERT_EQ(run.result, host::Result::done) << run.error;
+    EXPECT_EQ(run.copies, 2);
+    EXPECT_EQ(run.chain.chain->bridge().blocks_forwarded(), 5);
+    EXPECT_EQ(run.statistics.corrupted_refused, 1);
+    EXPECT_EQ(run.statistics.go_backs, 1);
+    const std::int64_t refused = run.first_status([](const firtp_lcm::status_t& s) {
+        return s.error_code == firtp_lcm::status_t::ERROR_CORRUPTED &&
+               s.error_text.find("block seq 5 (line 15): corrupted: CRC mismatch (crc 0x") == 0 &&
+               s.error_text.find("; refused, expected seq 5") != std::string::npos;
+    });
+    const std::int64_t accepted = run.first_status([](const firtp_lcm::status_t& s) { return s.next_seq == 6; });
+    ASSERT_GE(refused, 0);
+    ASSERT_GT(accepted, refused);
+    EXPECT_LT(accepted - refused, 20);  // periods (ms): at once, not after the 500 ms timeout
+    EXPECT_LE(run.max_abs_x(), 10.0 + 1e-9);
+    EXPECT_EQ(run.chain.position()[1], 25.0);
+    std::printf("corrupted last block through the host: refused at period %lld, its resend accepted at %lld\n",
+                static_cast<long long>(refused), static_cast<long long>(accepted));
 }

@@ -1,10 +1,13 @@
 // The component side in this process (hal-shim + firtp.so + bridge) on memq://, stepped one
-// servo period at a time, with every message it sends collected.
+// servo period at a time, with every message it sends collected (each checked: the component's
+// messages are sealed) and every message sent to it sealed, unless a test damages it on purpose.
 #pragma once
 
 #include <firtp/machine.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/servo_chain.hpp>
+
+#include <gtest/gtest.h>
 
 #include <memory>
 #include <vector>
@@ -23,10 +26,19 @@ struct Chain {
         messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Chain::on_state, this));
         messages::keep_everything(lcm->subscribe(messages::status_channel, &Chain::on_status, this));
     }
-    void on_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* m) { states.push_back(*m); }
-    void on_status(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::status_t* m) { statuses.push_back(*m); }
+    template <class Message> static Message intact(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+        const auto received = messages::receive<Message>(buffer->data, buffer->data_size);
+        EXPECT_FALSE(received.problem) << channel << ": " << *received.problem;
+        return received.message;
+    }
+    void on_state(const lcm::ReceiveBuffer* b, const std::string& c) { states.push_back(intact<firtp_lcm::axis_state_t>(b, c)); }
+    void on_status(const lcm::ReceiveBuffer* b, const std::string& c) { statuses.push_back(intact<firtp_lcm::status_t>(b, c)); }
 
-    void publish(const firtp_lcm::block_t& block) { lcm->publish(messages::block_channel, &block); }
+    void publish(firtp_lcm::block_t block) { messages::publish(*lcm, messages::block_channel, block); }
+    // Bytes as they are, e.g. a sealed message damaged in transit.
+    void publish_bytes(const char* channel, const std::vector<std::uint8_t>& bytes) {
+        lcm->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+    }
     void control(double feed, bool hold, bool abort, std::int64_t session = 1) {
         firtp_lcm::control_t c{};
         c.session = session;
@@ -34,7 +46,7 @@ struct Chain {
         c.feed_scale = feed;
         c.hold = hold;
         c.abort = abort;
-        lcm->publish(messages::control_channel, &c);
+        messages::publish(*lcm, messages::control_channel, c);
     }
     // Delivers what was published, runs `periods` servo periods and delivers their messages.
     void run(int periods) {

@@ -1,6 +1,8 @@
 // Faults between the host and the component, through the real chain (firtp host's Host, LCM,
 // firtp-bridge, firtp.so under hal-shim), deterministic: each side has its own memq:// LCM and a
-// relay between them drops, duplicates, delays (so reorders) and corrupts messages, stepped one
+// relay between them drops, duplicates, delays (so reorders) and corrupts messages (a damaged type
+// hash, a truncation, or one bit of the payload: a block's target or feed, a control's feed
+// override, a status's next_seq or queue_free, which still decode as valid messages), stepped one
 // servo period at a time with a clock that advances one period per step. Also: the host dying
 // mid-program and a restarted host resuming it, and the component restarting under a running host.
 //
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <random>
@@ -34,6 +37,13 @@ struct Faults {
     int min_delay = 0;
 };
 
+// Where the fields a payload corruption damages are in the encodings (after the 8-byte fingerprint).
+constexpr std::size_t block_target_at = 8 + 8 + 8 + 8 + 4 + 1 + 1;  // utime, program, seq, line, kinds
+constexpr std::size_t block_feed_at = block_target_at + 9 * 8;
+constexpr std::size_t control_feed_scale_at = 8 + 8 + 8 + 8;        // utime, session, seq
+constexpr std::size_t status_next_seq_at = 8 + 4 * 8;               // utime, seq, tick, program
+constexpr std::size_t status_queue_free_at = status_next_seq_at + 8 + 4;
+
 // One direction of the network: messages on `from` matching `channels` reach `to` after the
 // faults; pump(now) delivers what is due.
 class Link {
@@ -48,6 +58,7 @@ public:
         while (n < queue_.size() && queue_[n].due <= now) {
             to_->publish(queue_[n].channel, queue_[n].bytes.data(), static_cast<unsigned>(queue_[n].bytes.size()));
             ++delivered;
+            damaged_delivered += queue_[n].damaged;
             ++n;
         }
         queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(n));
@@ -56,12 +67,15 @@ public:
     void set_now(std::int64_t now) { now_ = now; }
 
     std::int64_t delivered = 0, dropped = 0, duplicated = 0, corrupted = 0, delayed = 0;
+    std::int64_t hash_damaged = 0, truncated = 0, payload_damaged = 0;  // the kinds of corruption
+    std::int64_t damaged_delivered = 0;  // corrupted copies delivered (a duplicate of one counts twice)
 
 private:
     struct Pending {
         std::int64_t due;
         std::string channel;
         std::vector<std::uint8_t> bytes;
+        bool damaged;
     };
     double unit() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
     void on_message(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
@@ -71,10 +85,20 @@ private:
             ++dropped;
             return;
         }
-        if (unit() < faults_.corrupt) {  // the kinds LCM can notice: a damaged type hash, a short message
+        const bool damaged = unit() < faults_.corrupt;
+        if (damaged) {
             ++corrupted;
-            if (unit() < 0.5 && bytes.size() > 8) bytes[static_cast<std::size_t>(unit() * 8)] ^= 0x5a;
-            else bytes.resize(static_cast<std::size_t>(unit() * static_cast<double>(bytes.size())));
+            const double kind = unit();
+            if (kind < 0.25 && bytes.size() > 8) {  // the kinds LCM's decode notices
+                ++hash_damaged;
+                bytes[static_cast<std::size_t>(unit() * 8)] ^= 0x5a;
+            } else if (kind < 0.5) {
+                ++truncated;
+                bytes.resize(static_cast<std::size_t>(unit() * static_cast<double>(bytes.size())));
+            } else {  // type hash and length intact: only the crc tells
+                ++payload_damaged;
+                flip_payload_bit(channel, bytes);
+            }
         }
         const int copies = unit() < faults_.duplicate ? 2 : 1;
         duplicated += copies - 1;
@@ -82,8 +106,36 @@ private:
             const auto delay =
                 faults_.min_delay + static_cast<std::int64_t>(unit() * (faults_.max_delay - faults_.min_delay + 1));
             delayed += delay > 0;
-            queue_.push_back({now_ + delay, channel, bytes});
+            queue_.push_back({now_ + delay, channel, bytes, damaged});
         }
+    }
+
+    // One bit of a field that matters, so the message still decodes as a valid one: a low
+    // mantissa bit (a change of at most 3 %) of a block's X, Y or Z target or its feed, or of a
+    // control's feed override; a status's next_seq or queue_free (bits 0-3); else any payload bit.
+    void flip_payload_bit(const std::string& channel, std::vector<std::uint8_t>& bytes) {
+        const auto pick = [this](int n) { return static_cast<std::size_t>(unit() * n); };
+        std::size_t field = 0;  // where the big-endian field starts
+        int low_bits = 0;       // flip one of its lowest low_bits bits
+        if (channel == messages::block_channel) {
+            const std::size_t which = pick(4);
+            field = which < 3 ? block_target_at + 8 * which : block_feed_at;
+            low_bits = 48;
+        } else if (channel == messages::control_channel) {
+            field = control_feed_scale_at;
+            low_bits = 48;
+        } else if (channel == messages::status_channel) {
+            field = unit() < 0.5 ? status_next_seq_at : status_queue_free_at;
+            low_bits = 4;
+        }
+        const std::size_t size = field == status_queue_free_at ? 4 : 8;
+        if (low_bits == 0 || field + size > bytes.size()) {
+            const std::size_t at = 8 + pick(static_cast<int>(bytes.size()) - 8);
+            bytes[at] ^= static_cast<std::uint8_t>(1u << pick(8));
+            return;
+        }
+        const std::size_t bit = pick(low_bits);
+        bytes[field + size - 1 - bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
     }
 
     lcm::LCM* to_;
@@ -145,9 +197,51 @@ struct Network {
           to_host(*component_lcm, *host_lcm, "FIRTP_STATUS", up, seed + 1) {
         messages::keep_everything(component_lcm->subscribe(messages::axis_state_channel, &Network::on_state, this));
         messages::keep_everything(component_lcm->subscribe(messages::status_channel, &Network::on_status, this));
+        messages::keep_everything(component_lcm->subscribe(messages::block_channel, &Network::on_block, this));
+        messages::keep_everything(component_lcm->subscribe(messages::control_channel, &Network::on_control, this));
     }
-    void on_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* m) { states.push_back(*m); }
-    void on_status(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::status_t* m) { statuses.push_back(*m); }
+    void on_state(const lcm::ReceiveBuffer* b, const std::string& c) { states.push_back(test::Chain::intact<firtp_lcm::axis_state_t>(b, c)); }
+    void on_status(const lcm::ReceiveBuffer* b, const std::string& c) { statuses.push_back(test::Chain::intact<firtp_lcm::status_t>(b, c)); }
+
+    // What reaches the component's LCM through the link, as the bridge sees it: an intact block is
+    // the program's own; a damaged one that still decodes as a valid block (the danger without a
+    // crc) is counted and must have been refused.
+    struct Delivered {
+        std::int64_t intact = 0, refused = 0, intact_but_wrong = 0;
+        std::int64_t valid_but_wrong = 0;  // refused, yet it decodes as a valid message that differs
+    } blocks_in, controls_in;
+    const Program* program = nullptr;  // the one the host sends
+    double feed_scale = 1.0;           // the override it sends
+
+    static bool same_block(const firtp_lcm::block_t& m, const Block& b) {
+        for (int a = 0; a < max_axes; ++a)
+            if (m.target[a] != b.target[a]) return false;
+        return m.feed == b.feed && m.tolerance == b.tolerance && m.line == b.line;
+    }
+    void on_block(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        if (program == nullptr) return;
+        const auto r = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
+        const bool known = r.decoded && r.message.seq >= 1 && r.message.seq <= std::ssize(program->blocks);
+        const bool ours = known && same_block(r.message, program->blocks[static_cast<std::size_t>(r.message.seq - 1)]);
+        if (!r.problem) {
+            ++blocks_in.intact;
+            blocks_in.intact_but_wrong += !ours;
+            return;
+        }
+        ++blocks_in.refused;
+        blocks_in.valid_but_wrong += r.decoded && !messages::validate(r.message) && !ours;
+    }
+    void on_control(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto r = messages::receive<firtp_lcm::control_t>(buffer->data, buffer->data_size);
+        if (!r.problem) {
+            ++controls_in.intact;
+            controls_in.intact_but_wrong += r.message.feed_scale != feed_scale;
+            return;
+        }
+        ++controls_in.refused;
+        controls_in.valid_but_wrong += r.decoded && std::isfinite(r.message.feed_scale) && r.message.feed_scale >= 0 &&
+                                       r.message.feed_scale != feed_scale;
+    }
 
     host::HostOptions options(std::int64_t program_id) {
         host::HostOptions o;
@@ -224,34 +318,78 @@ void expect_exactly_once_and_on_target(const Network& net, const Program& progra
 }  // namespace
 
 // Blocks, controls and statuses dropped (10 %), duplicated (5 %), delayed up to 30 ms (so
-// reordered) and corrupted (3 %: a damaged type hash or a truncated message, which LCM refuses),
-// with a hold and feed override changes sent over the same link: go-back-N and the republished
-// controls repair it all; nothing runs twice, nothing is skipped, the path keeps its tolerances.
+// reordered) and corrupted (6 %: a quarter a damaged type hash, a quarter truncated, half one bit
+// of the payload: a block's target or feed, a control's feed override, a status's next_seq or
+// queue_free, still a valid message to LCM's decode), with a hold sent over the same link:
+// the crc refuses every corrupted copy (a block as if lost, reported; a status dropped by the
+// host), go-back-N and the republished controls repair it all; nothing runs twice, nothing is
+// skipped, no damaged target, feed or override is used, the path keeps its tolerances.
 TEST(LcmFaults, LossyLinkDeliversEveryBlockOnceAndTheMachineStaysOnThePath) {
-    Faults down{0.10, 0.05, 0.03, 30};
-    Faults up{0.10, 0.05, 0.03, 20};
-    Network net(down, up, 11);
+    Faults down{0.10, 0.05, 0.06, 30};
+    Faults up{0.10, 0.05, 0.06, 20};
+    Network net(down, up, 12);
     const Program program = random_program(3, 150);
+    net.program = &program;
     host::Host h(*net.host_lcm, program, net.options(501));
     EXPECT_EQ(net.run(h, 600000, 3000, 4500), host::Result::done) << h.error();
     expect_exactly_once_and_on_target(net, program, 501);
     const double corners = worst_corner_share(net, program);
     EXPECT_LE(corners, 1.0 + 1e-3);
     const host::Statistics s = h.statistics();
+    const Link& down_link = net.to_component;
+    const Link& up_link = net.to_host;
     std::printf("lossy link: %lld blocks published for %zu (%lld go-backs), %lld refused by the bridge; down: %lld "
-                "dropped, %lld duplicated, %lld delayed, %lld corrupted; up: %lld dropped, %lld duplicated, %lld "
-                "corrupted; %lld periods; worst corner %.3f of its tolerance; |v|,|a| <= %.4f of the limits\n",
+                "dropped, %lld duplicated, %lld delayed, %lld corrupted (%lld type hash, %lld truncated, %lld payload); "
+                "up: %lld dropped, %lld duplicated, %lld corrupted (%lld type hash, %lld truncated, %lld payload); "
+                "%lld periods; worst corner %.3f of its tolerance; |v|,|a| <= %.4f of the limits\n",
                 static_cast<long long>(s.blocks_published), program.blocks.size(), static_cast<long long>(s.go_backs),
-                static_cast<long long>(s.rejected), static_cast<long long>(net.to_component.dropped),
-                static_cast<long long>(net.to_component.duplicated), static_cast<long long>(net.to_component.delayed),
-                static_cast<long long>(net.to_component.corrupted), static_cast<long long>(net.to_host.dropped),
-                static_cast<long long>(net.to_host.duplicated), static_cast<long long>(net.to_host.corrupted),
+                static_cast<long long>(s.rejected), static_cast<long long>(down_link.dropped),
+                static_cast<long long>(down_link.duplicated), static_cast<long long>(down_link.delayed),
+                static_cast<long long>(down_link.corrupted), static_cast<long long>(down_link.hash_damaged),
+                static_cast<long long>(down_link.truncated), static_cast<long long>(down_link.payload_damaged),
+                static_cast<long long>(up_link.dropped), static_cast<long long>(up_link.duplicated),
+                static_cast<long long>(up_link.corrupted), static_cast<long long>(up_link.hash_damaged),
+                static_cast<long long>(up_link.truncated), static_cast<long long>(up_link.payload_damaged),
                 static_cast<long long>(net.now), corners, worst_limit_ratio(net.states, net.machine.limits));
-    EXPECT_GT(net.to_component.dropped, 10);
-    EXPECT_GT(net.to_component.duplicated, 5);
-    EXPECT_GT(net.to_component.corrupted, 3);
-    EXPECT_GT(net.to_host.dropped, 10);
+    std::printf("lossy link, corruption: %lld corrupted copies reached the bridge, %lld refused as corrupted "
+                "(blocks: %lld intact, %lld refused, %lld of them valid blocks with another target or feed; "
+                "controls: %lld intact, %lld refused, %lld of them valid with another override); %lld corrupted "
+                "statuses reached the host, %lld dropped\n",
+                static_cast<long long>(down_link.damaged_delivered),
+                static_cast<long long>(net.chain->bridge().messages_corrupted()),
+                static_cast<long long>(net.blocks_in.intact), static_cast<long long>(net.blocks_in.refused),
+                static_cast<long long>(net.blocks_in.valid_but_wrong), static_cast<long long>(net.controls_in.intact),
+                static_cast<long long>(net.controls_in.refused), static_cast<long long>(net.controls_in.valid_but_wrong),
+                static_cast<long long>(up_link.damaged_delivered), static_cast<long long>(s.corrupted_dropped));
+    EXPECT_GT(down_link.dropped, 10);
+    EXPECT_GT(down_link.duplicated, 5);
+    EXPECT_GT(down_link.payload_damaged, 5);
+    EXPECT_GT(down_link.hash_damaged + down_link.truncated, 3);
+    EXPECT_GT(up_link.dropped, 10);
+    EXPECT_GT(up_link.payload_damaged, 3);
     EXPECT_GT(s.go_backs, 3);
+
+    // Every corrupted copy that reached the component was refused as corrupted, and nothing else.
+    EXPECT_EQ(net.chain->bridge().messages_corrupted(), down_link.damaged_delivered);
+    EXPECT_EQ(net.statuses.back().corrupted, down_link.damaged_delivered);
+    EXPECT_EQ(net.blocks_in.refused + net.controls_in.refused, down_link.damaged_delivered);
+    EXPECT_EQ(net.blocks_in.intact_but_wrong, 0);
+    EXPECT_EQ(net.controls_in.intact_but_wrong, 0);
+    EXPECT_GT(net.blocks_in.valid_but_wrong, 3);    // without the crc these would have run
+    EXPECT_GT(net.controls_in.valid_but_wrong, 0);  // and these changed the feed override
+    // Reported: the status named a refused block and the crc.
+    bool reported = false;
+    for (const auto& st : net.statuses)
+        reported = reported || (st.error_code == firtp_lcm::status_t::ERROR_CORRUPTED &&
+                                st.error_text.find("block seq ") == 0 &&
+                                st.error_text.find(": corrupted: CRC mismatch (crc 0x") != std::string::npos &&
+                                st.error_text.find("; refused, expected seq ") != std::string::npos);
+    EXPECT_TRUE(reported);
+    // The host dropped the corrupted statuses it read (those of its last period it never read).
+    EXPECT_GT(s.corrupted_dropped, 3);
+    EXPECT_LE(s.corrupted_dropped, up_link.damaged_delivered);
+    EXPECT_GT(s.corrupted_refused, 3);  // as the host last read it in a status
+    EXPECT_LE(s.corrupted_refused, down_link.damaged_delivered);
 }
 
 // For 3 s in the middle of the program every message to the component (the host's resends too) is

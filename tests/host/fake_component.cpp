@@ -1,5 +1,7 @@
 #include "fake_component.hpp"
 
+#include <firtp/messages.hpp>
+
 #include <algorithm>
 
 namespace firtp::host::test {
@@ -7,9 +9,9 @@ namespace firtp::host::test {
 using firtp_lcm::status_t;
 
 FakeComponent::FakeComponent(lcm::LCM& lcm, int capacity) : lcm_(lcm), capacity_(capacity) {
-    block_subscription_ = lcm_.subscribe("FIRTP_BLOCK", &FakeComponent::on_block, this);
+    block_subscription_ = lcm_.subscribe("FIRTP_BLOCK", &FakeComponent::on_block_bytes, this);
     block_subscription_->setQueueCapacity(0);
-    control_subscription_ = lcm_.subscribe("FIRTP_CONTROL", &FakeComponent::on_control, this);
+    control_subscription_ = lcm_.subscribe("FIRTP_CONTROL", &FakeComponent::on_control_bytes, this);
     control_subscription_->setQueueCapacity(0);
 }
 
@@ -37,7 +39,21 @@ void FakeComponent::preload(std::int64_t other_program, int blocks) {
     next_seq = blocks + 1;
 }
 
-void FakeComponent::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* message) {
+// As the bridge: the crc first; a corrupted block is refused as corrupted and not accepted.
+void FakeComponent::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+    const auto received = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
+    if (!received.problem) return on_block(&received.message);
+    ++corrupted;
+    refuse(status_t::ERROR_CORRUPTED, "block: " + *received.problem);
+}
+
+void FakeComponent::on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+    const auto received = messages::receive<firtp_lcm::control_t>(buffer->data, buffer->data_size);
+    if (!received.problem) return on_control(&received.message);
+    ++corrupted;
+}
+
+void FakeComponent::on_block(const firtp_lcm::block_t* message) {
     if (drop_once.erase(message->seq) > 0) return;
     if (delay_once.erase(message->seq) > 0) {
         delayed_.push_back(*message);
@@ -50,7 +66,7 @@ void FakeComponent::on_block(const lcm::ReceiveBuffer*, const std::string&, cons
     for (const auto& block : late) receive(block);
 }
 
-void FakeComponent::on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* message) {
+void FakeComponent::on_control(const firtp_lcm::control_t* message) {
     if (drop_controls > 0) {
         --drop_controls;
         return;
@@ -139,8 +155,9 @@ void FakeComponent::publish_status() {
     status.error_code = error_code_;
     status.error_text = error_text_;
     status.rejected = rejected;
+    status.corrupted = corrupted;
     window_end_ = status.next_seq + status.queue_free;
-    lcm_.publish("FIRTP_STATUS", &status);
+    messages::publish(lcm_, "FIRTP_STATUS", status);
 }
 
 void FakeComponent::publish_axis_state() {
@@ -152,7 +169,7 @@ void FakeComponent::publish_axis_state() {
     message.time = static_cast<double>(tick_) * 0.001;
     message.line = queue_.empty() ? 0 : queue_.front().line;
     message.position[0] = static_cast<double>(executed);
-    lcm_.publish("FIRTP_AXIS_STATE", &message);
+    messages::publish(lcm_, "FIRTP_AXIS_STATE", message);
     ++axis_published;
 }
 

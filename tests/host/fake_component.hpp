@@ -1,6 +1,6 @@
 // A stand-in for the real-time component on a shared memq:// LCM: takes FIRTP_BLOCK and
-// FIRTP_CONTROL, answers FIRTP_STATUS by the rules in status_t.lcm / block_t.lcm, publishes
-// FIRTP_AXIS_STATE, and can be told to lose, duplicate or reorder blocks or to fall silent.
+// FIRTP_CONTROL (checking their crc first, as the bridge), answers FIRTP_STATUS by the rules in
+// status_t.lcm / block_t.lcm, publishes FIRTP_AXIS_STATE (all sealed), and can be told to lose, duplicate or reorder blocks or to fall silent.
 #pragma once
 
 #include <firtp_lcm/axis_state_t.hpp>
@@ -51,6 +51,7 @@ public:
     std::vector<firtp_lcm::control_t> controls;
     std::int64_t executed = 0;           // blocks finished (not dropped)
     std::int64_t rejected = 0, repeats = 0, gaps = 0, queue_full = 0;
+    std::int64_t corrupted = 0;          // blocks and controls whose crc did not match (refused, ignored)
     int max_depth = 0;
     std::int64_t window_violations = 0;  // seq >= next_seq + queue_free of the newest status sent
     std::int64_t axis_published = 0;
@@ -63,8 +64,10 @@ public:
     double feed_scale() const { return feed_scale_; }
 
 private:
-    void on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* message);
-    void on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* message);
+    void on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+    void on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+    void on_block(const firtp_lcm::block_t* message);
+    void on_control(const firtp_lcm::control_t* message);
     void receive(const firtp_lcm::block_t& message);
     void refuse(std::int32_t code, const std::string& text);
     void publish_status();

@@ -1,6 +1,7 @@
 // How a program ends: done, failed (with the component's text), lost, aborted.
 #include "test_support.hpp"
 
+#include <firtp/host_report.hpp>
 #include <firtp/messages.hpp>
 #include <firtp_lcm/status_t.hpp>
 
@@ -69,9 +70,11 @@ TEST_F(OutcomeTest, ErrorStateFailsWithItsText) {
     EXPECT_EQ(host.error(), "following error on X");
 }
 
-// Corrupt FIRTP_STATUS messages (a string length of 0, which lcm-gen 1.3.1's decode threw on, and
-// noise) between the component's good ones: dropped, and the program runs to its end. Before
-// lcm-types/fix_string_decode.cmake the first one terminated the host (found by fuzz_lcm).
+// Corrupt FIRTP_STATUS messages between the component's good ones: dropped, and the program runs
+// to its end. A string length of 0 in an intact (sealed) message, which lcm-gen 1.3.1's decode
+// threw on (before lcm-types/fix_string_decode.cmake the first one terminated the host; found by
+// fuzz_lcm); noise; and a status whose next_seq and queue_free were damaged in transit (a bit flip
+// each, the crc not matching): the host must not trust them (it would send beyond the window).
 TEST_F(OutcomeTest, CorruptStatusMessagesAreDroppedNotFatal) {
     FakeComponent component(lcm, 8);
     const Program program = line_program(6);
@@ -80,18 +83,35 @@ TEST_F(OutcomeTest, CorruptStatusMessagesAreDroppedNotFatal) {
     status_t corrupt{};
     corrupt.program = 1000;
     corrupt.error_text = "x";
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(corrupt.getEncodedSize()));
-    corrupt.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    std::vector<unsigned char> bytes = firtp::messages::seal_encoded(corrupt);
     constexpr std::size_t length_at = 8 + 5 * 8 + 3 * 4 + 1 + 8 + 4;  // error_text's length
     for (int i = 0; i < 4; ++i) bytes[length_at + i] = 0;
+    const std::uint32_t crc = firtp::messages::crc32(bytes.data(), bytes.size() - 4);
+    for (std::size_t i = 0; i < 4; ++i) bytes[bytes.size() - 4 + i] = static_cast<unsigned char>(crc >> (24 - 8 * i));
+    ASSERT_TRUE(firtp::messages::intact(bytes.data(), bytes.size()));
     const std::vector<unsigned char> noise(40, 0x5a);
+    status_t lying{};
+    lying.program = 1000;
+    lying.next_seq = 1;
+    lying.queue_free = 8;
+    std::vector<unsigned char> damaged = firtp::messages::seal_encoded(lying);
+    constexpr std::size_t next_seq_low = 8 + 5 * 8 - 1, queue_free_high = 8 + 5 * 8 + 4;
+    damaged[next_seq_low] ^= 0x04;     // next_seq 1 -> 5: blocks 1-4 as if accepted
+    damaged[queue_free_high] ^= 0x01;  // queue_free 8 -> 2^24 + 8: a window without end
     const Result result = run_loop(host, component, clock, 100000, [&](int tick) {
         const char* channel = firtp::messages::status_channel;
         if (tick % 7 == 0) lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
         if (tick % 11 == 0) lcm.publish(channel, noise.data(), static_cast<unsigned>(noise.size()));
+        if (tick % 5 == 0) lcm.publish(channel, damaged.data(), static_cast<unsigned>(damaged.size()));
     });
     EXPECT_EQ(result, Result::done) << host.error();
     EXPECT_EQ(seqs(component.accepted), one_to(6));
+    EXPECT_EQ(component.window_violations, 0);
+    const std::int64_t dropped = host.statistics().corrupted_dropped;
+    EXPECT_GT(dropped, 3);
+    EXPECT_THAT(host_report("test.ngc", host, result, 1.0, false),
+                HasSubstr("  corrupted in transit (CRC mismatch): 0 blocks and controls refused by the component, " +
+                          std::to_string(dropped) + " statuses and axis states dropped here\n"));
 }
 
 TEST_F(OutcomeTest, OneOffRefusalIsRepairedByTheResend) {
@@ -121,7 +141,7 @@ TEST_F(OutcomeTest, OldErrorOfAnEarlierProgramIsIgnored) {
     firtp_lcm::block_t stale{};
     stale.program = 5;
     stale.seq = 1;
-    lcm.publish("FIRTP_BLOCK", &stale);
+    firtp::messages::publish(lcm, "FIRTP_BLOCK", stale);
     while (lcm.handleTimeout(0) > 0) {}
     const Program program = line_program(10);
     Host host(lcm, program, options_for(clock));

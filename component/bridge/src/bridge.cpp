@@ -84,8 +84,8 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
                                  "(is firtp loaded with the same block_key/state_key?)");
     }
     hal_ready(comp_id_);
-    block_subscription_ = lcm.subscribe(messages::block_channel, &Bridge::on_block, this);
-    control_subscription_ = lcm.subscribe(messages::control_channel, &Bridge::on_control, this);
+    block_subscription_ = lcm.subscribe(messages::block_channel, &Bridge::on_block_bytes, this);
+    control_subscription_ = lcm.subscribe(messages::control_channel, &Bridge::on_control_bytes, this);
     messages::keep_everything(block_subscription_);
     messages::keep_everything(control_subscription_);
 }
@@ -111,7 +111,31 @@ bool Bridge::component_idle() const {
            hal_pin::get(pins_->state) != firtp_lcm::status_t::ABORTING;
 }
 
-void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* m) {
+// The crc first: a corrupted block is refused like a lost one (never planned, never acknowledged:
+// next_seq stays, the host resends it), and reported, named as far as its bytes allow.
+void Bridge::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    const auto received = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
+    if (!received.problem) return on_block(&received.message);
+    ++rejected_;
+    ++corrupted_;
+    const std::string name = received.decoded ? messages::describe(received.message)
+                                              : channel + " message (" + std::to_string(buffer->data_size) + " bytes)";
+    report(firtp_lcm::status_t::ERROR_CORRUPTED,
+           name + ": " + *received.problem + "; refused, expected seq " + std::to_string(sequence_.next_seq()));
+}
+
+// A corrupted control is ignored (the levels in effect stay) and reported; the host republishes
+// its controls every control period.
+void Bridge::on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    const auto received = messages::receive<firtp_lcm::control_t>(buffer->data, buffer->data_size);
+    if (!received.problem) return on_control(&received.message);
+    ++corrupted_;
+    const std::string name = received.decoded ? "control seq " + std::to_string(received.message.seq)
+                                              : channel + " message (" + std::to_string(buffer->data_size) + " bytes)";
+    report(firtp_lcm::status_t::ERROR_CORRUPTED, name + ": " + *received.problem + "; ignored, the controls in effect stay");
+}
+
+void Bridge::on_block(const firtp_lcm::block_t* m) {
     using Verdict = messages::SequenceChecker::Verdict;
     if (const auto why = messages::validate(*m)) {
         ++rejected_;
@@ -159,7 +183,7 @@ void Bridge::on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp
     ++forwarded_;
 }
 
-void Bridge::on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* m) {
+void Bridge::on_control(const firtp_lcm::control_t* m) {
     if (m->session == control_session_ && m->seq <= control_seq_) return;  // older than what is in effect
     control_session_ = m->session;  // a new host starts its own count
     control_seq_ = m->seq;
@@ -213,11 +237,11 @@ void Bridge::forward_states() {
         }
         if (options_.every_period) {
             m.seq = ++state_seq_;
-            lcm_->publish(messages::axis_state_channel, &m);
+            messages::publish(*lcm_, messages::axis_state_channel, m);
         }
         if (options_.live_decimation > 0 && tick % options_.live_decimation == 0) {
             m.seq = tick / options_.live_decimation;
-            lcm_->publish(messages::axis_state_live_channel, &m);
+            messages::publish(*lcm_, messages::axis_state_live_channel, m);
         }
         ++states_;
         if (++periods_since_status_ >= options_.status_every) status_due_ = true;
@@ -246,7 +270,8 @@ void Bridge::publish_status() {
         s.error_text = error_text_;
     }
     s.rejected = rejected_ + hal_pin::get(pins_->rejected);
-    lcm_->publish(messages::status_channel, &s);
+    s.corrupted = corrupted_;
+    messages::publish(*lcm_, messages::status_channel, s);
     periods_since_status_ = 0;
     status_due_ = false;
 }

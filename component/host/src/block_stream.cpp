@@ -27,11 +27,13 @@ void BlockStream::on_status(const status_t& status, Clock::time_point now) {
     else  // another program still queued: wait for it
         limit_ = acked_;
 
-    // A gap or a full queue means blocks after acked_ were refused: resend them now, once per
-    // seq and resend_timeout (late refusals of the same burst must not restart it again).
+    // A gap, a full queue or a corrupted block means blocks from acked_ on were refused (a
+    // corrupted one is as good as lost): resend them now, once per seq and resend_timeout (late
+    // refusals of the same burst must not restart it again).
     const bool refused_more = have_status_ && status.rejected > last_rejected_;
     const bool resend = status.error_code == status_t::ERROR_SEQUENCE_GAP ||
-                        status.error_code == status_t::ERROR_QUEUE_FULL;
+                        status.error_code == status_t::ERROR_QUEUE_FULL ||
+                        status.error_code == status_t::ERROR_CORRUPTED;
     last_rejected_ = status.rejected;
     have_status_ = true;
     if (refused_more && resend && next_send_ > acked_ &&

@@ -67,12 +67,36 @@ struct Host::State {
 
     Clock::time_point now() const { return options.clock ? options.clock() : Clock::now(); }
 
-    void on_status(const lcm::ReceiveBuffer*, const std::string&, const status_t* status) {
+    // A status or axis state whose crc does not match is dropped, as if lost: the next intact
+    // one replaces it (a status says everything again; axis states show the gap in their seq).
+    void on_status_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto received = messages::receive<status_t>(buffer->data, buffer->data_size);
+        if (received.problem) {
+            ++statistics.corrupted_dropped;
+            return;
+        }
+        on_status(&received.message);
+    }
+
+    void on_axis_state_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto received = messages::receive<firtp_lcm::axis_state_t>(buffer->data, buffer->data_size);
+        if (received.problem) {
+            ++statistics.corrupted_dropped;
+            return;
+        }
+        axes.on_message(received.message);
+    }
+
+    void on_status(const status_t* status) {
         const Clock::time_point t = now();
         ++statistics.statuses;
         last_status = t;
-        if (!latest) rejected_before = status->rejected;
+        if (!latest) {
+            rejected_before = status->rejected;
+            corrupted_before = status->corrupted;
+        }
         statistics.rejected = status->rejected - rejected_before;
+        statistics.corrupted_refused = status->corrupted - corrupted_before;
         latest = *status;
         stream.on_status(*status, t);
         if (result != Result::running) return;
@@ -93,10 +117,6 @@ struct Host::State {
         }
     }
 
-    void on_axis_state(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::axis_state_t* state) {
-        axes.on_message(*state);
-    }
-
     void finish(Result r, std::string text) {
         result = r;
         error = std::move(text);
@@ -109,7 +129,7 @@ struct Host::State {
 
     void publish_control(Clock::time_point t) {
         if (auto message = control.due(t, messages::now_utime())) {
-            lcm.publish(messages::control_channel, &*message);
+            messages::publish(lcm, messages::control_channel, *message);
             ++statistics.controls;
         }
     }
@@ -120,7 +140,7 @@ struct Host::State {
             if (!seq) return;
             firtp_lcm::block_t& message = blocks[*seq - 1];
             message.utime = messages::now_utime();
-            lcm.publish(messages::block_channel, &message);
+            messages::publish(lcm, messages::block_channel, message);  // sealed after the utime
             stream.sent(*seq, t);
             ++statistics.blocks_published;
         }
@@ -149,7 +169,8 @@ struct Host::State {
     std::string error;
     Statistics statistics;
     std::optional<status_t> latest;
-    std::int64_t rejected_before = 0;  // status rejected count when this host started
+    std::int64_t rejected_before = 0;   // status rejected count when this host started
+    std::int64_t corrupted_before = 0;  // status corrupted count then
     bool started = false;
     bool aborting = false;
     bool seen_ours = false;                                 // a status has named this program
@@ -160,9 +181,9 @@ struct Host::State {
 Host::Host(lcm::LCM& lcm, const Program& program, HostOptions options)
     : state_(std::make_unique<State>(lcm, program, std::move(options))) {
     State& s = *state_;
-    s.status_subscription = lcm.subscribe(messages::status_channel, &State::on_status, &s);
+    s.status_subscription = lcm.subscribe(messages::status_channel, &State::on_status_bytes, &s);
     messages::keep_everything(s.status_subscription);
-    s.axis_subscription = lcm.subscribe(messages::axis_state_channel, &State::on_axis_state, &s);
+    s.axis_subscription = lcm.subscribe(messages::axis_state_channel, &State::on_axis_state_bytes, &s);
     messages::keep_everything(s.axis_subscription);
 }
 

@@ -21,6 +21,13 @@ std::string host_report(const std::string& program_file, const Host& host, Resul
     text += line;
     std::snprintf(line, sizeof line, "  axis states: %lld received\n", static_cast<long long>(s.axis_states));
     text += line;
+    if (s.corrupted_refused > 0 || s.corrupted_dropped > 0) {
+        std::snprintf(line, sizeof line,
+                      "  corrupted in transit (CRC mismatch): %lld blocks and controls refused by the component, "
+                      "%lld statuses and axis states dropped here\n",
+                      static_cast<long long>(s.corrupted_refused), static_cast<long long>(s.corrupted_dropped));
+        text += line;
+    }
     if (!host.error().empty()) text += "  error: " + host.error() + "\n";
     const std::string gaps = host.axis_state_gap_text();
     if (recorded_axis_states && !gaps.empty()) text += "  error: recording incomplete: " + gaps + "\n";

@@ -10,7 +10,8 @@ using firtp_lcm::status_t;
 // Errors go-back-N repairs (or that are harmless); anything else ends the program.
 bool recoverable(std::int32_t code) {
     return code == status_t::ERROR_NONE || code == status_t::ERROR_SEQUENCE_GAP ||
-           code == status_t::ERROR_REPEATED || code == status_t::ERROR_QUEUE_FULL;
+           code == status_t::ERROR_REPEATED || code == status_t::ERROR_QUEUE_FULL ||
+           code == status_t::ERROR_CORRUPTED;  // refused as if lost: the resend repairs it
 }
 
 std::string error_text(const status_t& status) {

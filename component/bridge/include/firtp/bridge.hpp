@@ -1,7 +1,8 @@
 // The LCM bridge: a non-real-time HAL component ("firtp-bridge") between LCM and the firtp
-// component. Blocks from FIRTP_BLOCK are validated and sequenced (each (program, seq) once, in
+// component. Blocks from FIRTP_BLOCK are checked (the crc of the bytes as received first: a
+// corrupted one is refused like a lost one), validated and sequenced (each (program, seq) once, in
 // order) and written into the component's block stream; FIRTP_CONTROL drives the feed-scale,
-// hold and abort pins; the component's status pins and axis-state stream go out as
+// hold and abort pins; the component's status pins and axis-state stream go out, sealed, as
 // FIRTP_STATUS and FIRTP_AXIS_STATE (every period) / FIRTP_AXIS_STATE_LIVE (decimated).
 // The handoff to the servo thread is the lock-free hal_stream; nothing here blocks it.
 #pragma once
@@ -42,14 +43,18 @@ public:
     static const char* const* pin_pairs();
 
     std::int64_t blocks_forwarded() const { return forwarded_; }
+    // Blocks and controls refused because their crc did not match (status_t corrupted).
+    std::int64_t messages_corrupted() const { return corrupted_; }
     // Nothing queued in the component or its stream, and not aborting.
     bool idle() const { return component_idle(); }
     std::int64_t states_published() const { return states_; }
 
 private:
     struct Pins;
-    void on_block(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::block_t* message);
-    void on_control(const lcm::ReceiveBuffer*, const std::string&, const firtp_lcm::control_t* message);
+    void on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+    void on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+    void on_block(const firtp_lcm::block_t* message);      // intact
+    void on_control(const firtp_lcm::control_t* message);  // intact
     void report(std::int32_t error, std::string text);
     void forward_states();
     void publish_status();
@@ -71,6 +76,7 @@ private:
     std::int32_t error_ = 0;
     std::string error_text_;
     std::int64_t rejected_ = 0;
+    std::int64_t corrupted_ = 0;
     std::int64_t forwarded_ = 0;
     std::int64_t states_ = 0;
     std::int64_t status_seq_ = 0;

@@ -65,6 +65,8 @@ struct Statistics {
     std::int64_t blocks_published = 0;  // including resends
     std::int64_t go_backs = 0;          // go-back-N resends
     std::int64_t rejected = 0;          // blocks the component refused while this host ran
+    std::int64_t corrupted_refused = 0; // of those and of the controls: refused as corrupted (bad crc)
+    std::int64_t corrupted_dropped = 0; // statuses and axis states dropped here as corrupted (bad crc)
     std::int64_t statuses = 0;
     std::int64_t controls = 0;          // control_t messages published
     std::int64_t axis_states = 0;       // FIRTP_AXIS_STATE messages received
@@ -73,7 +75,8 @@ struct Statistics {
 
 class Host {
 public:
-    // Subscribes to FIRTP_STATUS and FIRTP_AXIS_STATE on `lcm`. Blocks that fail
+    // Subscribes to FIRTP_STATUS and FIRTP_AXIS_STATE on `lcm` (messages whose crc does not match
+    // are dropped, as if lost); every message it publishes is sealed. Blocks that fail
     // messages::validate make the host fail at once, before anything is sent.
     Host(lcm::LCM& lcm, const Program& program, HostOptions options = {});
     ~Host();
