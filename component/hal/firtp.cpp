@@ -330,6 +330,9 @@ int fail(const char* what) {
 }  // namespace
 
 extern "C" int rtapi_app_main(void) {
+    // firtp.so may stay mapped after an unload (unique C++ symbols): a reload starts these afresh.
+    has_block_stream = has_state_stream = false;
+    state_overruns = ticks = 0;
     comp_id = hal_init("firtp");
     if (comp_id < 0) return comp_id;
     if (axes < 1 || axes > firtp::max_axes) return fail(("axes=" + std::to_string(axes) + ": must be 1 to 9").c_str());
@@ -362,6 +365,7 @@ extern "C" int rtapi_app_main(void) {
 extern "C" void rtapi_app_exit(void) {
     if (has_block_stream) hal_stream_destroy(&block_stream);
     if (has_state_stream) hal_stream_destroy(&state_stream);
+    has_block_stream = has_state_stream = false;
     delete core;
     core = nullptr;
     if (comp_id >= 0) hal_exit(comp_id);

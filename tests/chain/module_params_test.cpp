@@ -78,6 +78,8 @@ TEST(ModuleParams, BadValuesAreRefusedNamingTheParameter) {
     EXPECT_EQ(with({"plan_budget_us=-1"}), "firtp: plan_budget_us=-1: must be 0 (none) or positive\n");
     EXPECT_EQ(with({"axes=10"}), "firtp: axes=10: must be 1 to 9\n");
     EXPECT_EQ(with({"meaning=max"}), "firtp: meaning=max: must be corner or contour\n");
+    EXPECT_EQ(with({"brake_speed=-1"}), "firtp: brake_speed=-1: must be zero or positive, units/s\n");
+    EXPECT_EQ(with({"brake_speed=fast"}), "firtp: brake_speed=fast: not a finite number\n");
     EXPECT_EQ(with({"max_velocity=300,300,300", "max_acceleration=5000,5000,5000", "max_jerk=1e5,1e5,0"}), "loaded");
 }
 
@@ -98,4 +100,23 @@ TEST(ModuleParams, ReloadStartsFromTheDefaults) {
     std::vector<std::string> modules = shim::loaded_modules();
     EXPECT_EQ(modules, std::vector<std::string>{"firtp"});
     shim::unload_module("firtp");
+}
+
+// The same for the module's own state: a load with streams, then one without (block_key=0
+// state_key=0). The second used to keep "has a block stream" from the first and read the destroyed
+// stream in its first period (a segfault, found by the component-restart test).
+TEST(ModuleParams, ReloadWithoutStreamsRunsWithoutTheOldOnes) {
+    const std::string module = firtp::default_module_path().string();
+    ASSERT_TRUE(shim::load_module(module, {"t1=0.06", "t2=0.05"}).ok());
+    shim::unload_module("firtp");
+    ASSERT_TRUE(shim::load_module(module, {"t1=0.06", "t2=0.05", "block_key=0", "state_key=0"}).ok());
+    ASSERT_TRUE(shim::new_thread("servo-thread", 1000000).ok());
+    ASSERT_TRUE(shim::add_funct("firtp.update", "servo-thread").ok());
+    ASSERT_TRUE(shim::set_value("firtp.enable", "1").ok());
+    ASSERT_TRUE(shim::step(10).ok());
+    shim::Value tick;
+    ASSERT_TRUE(shim::get_value("firtp.tick", tick).ok());
+    EXPECT_EQ(tick.as_double(), 10.0);  // counted from this load
+    shim::unload_module("firtp");
+    shim::delete_thread("servo-thread");
 }
