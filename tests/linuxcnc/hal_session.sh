@@ -1,0 +1,53 @@
+# Sourced by the real-LinuxCNC HAL tests, with $module (this build's LinuxCNC firtp.so, or none)
+# and $moddir (rtapi_app's module directory) set: skips (exit 77) where LinuxCNC is missing, makes
+# $work, defines as_user (halrun as `nobody` when root: rtapi_app refuses root; setpriv, no account
+# to create; rtapi_app is setuid root and drops to the real uid itself), places this build's
+# firtp.so where rtapi_app looks (`loadrt /path/firtp` is refused) and puts back what was there on
+# exit, and waits for another HAL session to end: only one can exist per machine (ctest runs these
+# under RESOURCE_LOCK linuxcnc). Set session=1 before starting halrun: the exit trap then runs
+# `halrun -U`; run halrun in the background as $halrun_pid so a signal reaches the trap at once.
+skip() { echo "SKIPPED: $*"; exit 77; }
+[ "$module" != none ] || skip "LinuxCNC's headers are not installed (linuxcnc-uspace-dev), so the LinuxCNC firtp.so was not built (FIRTP_LINUXCNC)"
+command -v halrun > /dev/null || skip "halrun not found (linuxcnc-uspace)"
+[ -d "$moddir" ] || skip "no LinuxCNC module directory $moddir"
+realtime=/usr/lib/linuxcnc/realtime
+
+work=$(mktemp -d /tmp/firtp-lcnc-hal.XXXXXX)
+installed=$moddir/firtp.so
+placed=0 session=0 halrun_pid=
+if [ "$(id -u)" -eq 0 ]; then
+  uid=$(id -u nobody 2> /dev/null || echo 65534) gid=$(id -g nobody 2> /dev/null || echo 65534)
+  chown "$uid:$gid" "$work"
+  as_user() { setpriv --reuid="$uid" --regid="$gid" --clear-groups env HOME="$work" "$@"; }
+  echo "halrun runs as uid $uid (setpriv): rtapi_app refuses root"
+else
+  as_user() { env HOME="$work" "$@"; }
+fi
+running() { "$realtime" status > /dev/null 2>&1; }
+cleanup() {
+  local status=$?
+  if [ -n "$halrun_pid" ]; then kill "$halrun_pid" 2> /dev/null || true; fi
+  if ((session)) && running; then as_user timeout 20 halrun -U > /dev/null 2>&1 || echo "halrun -U failed" >&2; fi
+  if ((placed)); then
+    if [ -e "$work/firtp.so.before" ]; then mv -f "$work/firtp.so.before" "$installed"; else rm -f "$installed"; fi
+  fi
+  rm -rf "$work"
+  exit $status
+}
+trap cleanup EXIT
+trap 'exit 1' INT TERM
+
+# This build's module where rtapi_app looks for it.
+if [ -e "$installed" ] && cmp -s "$module" "$installed"; then
+  echo "$installed is this build's already"
+elif [ -w "$moddir" ]; then
+  if [ -e "$installed" ]; then cp -p "$installed" "$work/firtp.so.before"; fi
+  placed=1
+  cp "$module" "$moddir/.firtp.so.test" && mv -f "$moddir/.firtp.so.test" "$installed"
+else
+  skip "$installed is not this build's and $moddir is not writable: cmake --build BUILD --target install-linuxcnc (as root), or run as root"
+fi
+
+# One HAL session per machine: wait for someone else's to end rather than break it.
+for _ in $(seq 60); do running || break; sleep 1; done
+if running; then echo "FAIL: another HAL session (rtapi_app) is still running after 60 s"; exit 1; fi
