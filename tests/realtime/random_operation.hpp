@@ -76,6 +76,7 @@ struct OperationOptions {
     double holds_per_s = 0.1;
     double aborts_per_s = 0.02;
     double disables_per_s = 0.005;
+    double coast_chance = 0.5;  // the axes still move when enable rises: the component brakes from vel-fb
     // Stream faults, per block sent.
     double repeat_chance = 0.005;
     double gap_chance = 0.0005;
@@ -91,6 +92,7 @@ struct OperationStats {
     std::int64_t completed = 0;       // ran to their end, end position checked
     std::int64_t aborted = 0;
     std::int64_t disabled = 0;
+    std::int64_t braked = 0;          // enables while moving, braked from the feedback with that error
     std::int64_t faulted = 0;         // stopped by a gap or a NaN block, with that error
     std::int64_t repeats = 0;         // repeated blocks sent, each refused
     std::int64_t overrides = 0, holds = 0;
@@ -119,6 +121,12 @@ public:
         const double dt = settings_.planner.period;
         if (disabled_ticks_ > 0) {
             in_.enable = --disabled_ticks_ == 0;
+            if (in_.enable && event(options_.coast_chance)) {  // the axes coast: up to 1.5 x their limits
+                for (int a = 0; a < settings_.axes; ++a)
+                    in_.velocity_feedback[a] = (2.0 * unit() - 1.0) * 1.5 * (has_limits_ ? limits_.axis[a].max_velocity : 200.0);
+                expected_ = ComponentError::stopped_from_feedback;
+                ++stats_.braked;
+            }
             return;
         }
         for (int n = 0; phase_ == Phase::sending && n < options_.blocks_per_tick && !ring.full() && blocks_left_ > 0; ++n)

@@ -128,11 +128,11 @@ TEST_P(ComponentRealTime, UpdateNeitherAllocatesNorLocks) {
     const test::OperationStats& s = op.stats();
     EXPECT_TRUE(op.ok()) << s.first_violation;
     expect_clean(totals, limits ? "ComponentCore::update, machine with limits" : "ComponentCore::update, no limits");
-    std::printf("  %lld ticks, %lld blocks, %lld programs: %lld completed, %lld aborted, %lld disabled, %lld faults "
+    std::printf("  %lld ticks, %lld blocks, %lld programs: %lld completed, %lld aborted, %lld disabled (%lld braked), %lld faults "
                 "(gap, NaN), %lld repeats refused; %lld overrides, %lld holds; end error %.3g mm; |v|,|a|/limit %.6f\n",
                 static_cast<long long>(s.ticks), static_cast<long long>(s.blocks), static_cast<long long>(s.programs),
                 static_cast<long long>(s.completed), static_cast<long long>(s.aborted),
-                static_cast<long long>(s.disabled), static_cast<long long>(s.faulted),
+                static_cast<long long>(s.disabled), static_cast<long long>(s.braked), static_cast<long long>(s.faulted),
                 static_cast<long long>(s.repeats), static_cast<long long>(s.overrides),
                 static_cast<long long>(s.holds), s.worst_end_error, s.worst_limit_ratio);
     EXPECT_EQ(totals.calls, ticks);
@@ -140,6 +140,7 @@ TEST_P(ComponentRealTime, UpdateNeitherAllocatesNorLocks) {
     EXPECT_GT(s.completed, 20);
     EXPECT_GT(s.aborted, 5);
     EXPECT_GT(s.disabled, 2);
+    EXPECT_GT(s.braked, 0);
     EXPECT_GT(s.faulted, 2);
     EXPECT_GT(s.repeats, 20);
     EXPECT_GT(s.holds, 30);

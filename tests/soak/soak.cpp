@@ -59,6 +59,7 @@ void add(test::OperationStats& total, const test::OperationStats& s) {
     total.completed += s.completed;
     total.aborted += s.aborted;
     total.disabled += s.disabled;
+    total.braked += s.braked;
     total.faulted += s.faulted;
     total.repeats += s.repeats;
     total.overrides += s.overrides;
@@ -90,8 +91,8 @@ int main(int argc, char** argv) {
     const auto begin = std::chrono::steady_clock::now();
     std::printf("firtp_soak: %.3g ticks (%.1f h of motion at 1 kHz), seed %llu, machines alternate every %.3g ticks\n",
                 ticks, ticks / 3.6e6, static_cast<unsigned long long>(seed), segment);
-    std::printf("%12s %9s %9s %8s %7s %7s %7s %10s %10s %9s %9s\n", "ticks", "blocks", "completed", "aborted",
-                "disabl", "faults", "repeats", "end err mm", "|v|,|a|/lim", "RSS KiB", "ticks/s");
+    std::printf("%12s %9s %9s %8s %7s %7s %7s %7s %10s %10s %9s %9s\n", "ticks", "blocks", "completed", "aborted",
+                "disabl", "braked", "faults", "repeats", "end err mm", "|v|,|a|/lim", "RSS KiB", "ticks/s");
     long rss_first = -1, rss_max = 0;
     std::int64_t done = 0, next_report = static_cast<std::int64_t>(report);
     bool ok = true;
@@ -109,9 +110,10 @@ int main(int argc, char** argv) {
             if (rss_first < 0) rss_first = rss;
             rss_max = std::max(rss_max, rss);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-            std::printf("%12lld %9lld %9lld %8lld %7lld %7lld %7lld %10.2g %10.6f %9ld %9.3g\n", static_cast<long long>(done),
-                        static_cast<long long>(total.blocks), static_cast<long long>(total.completed),
-                        static_cast<long long>(total.aborted), static_cast<long long>(total.disabled),
+            std::printf("%12lld %9lld %9lld %8lld %7lld %7lld %7lld %7lld %10.2g %10.6f %9ld %9.3g\n",
+                        static_cast<long long>(done), static_cast<long long>(total.blocks),
+                        static_cast<long long>(total.completed), static_cast<long long>(total.aborted),
+                        static_cast<long long>(total.disabled), static_cast<long long>(total.braked),
                         static_cast<long long>(total.faulted), static_cast<long long>(total.repeats),
                         total.worst_end_error, total.worst_limit_ratio, rss, static_cast<double>(done) / seconds);
             std::fflush(stdout);
