@@ -210,8 +210,17 @@ bool SampledWindow::feasible(const Candidate& c, int stride) const {
     // from the sweep state there.
     const std::int64_t skip = std::clamp<std::int64_t>(start - 1 - tail_tick_, 0, static_cast<std::int64_t>(tail_.size()));
     Sweep w = prefix(static_cast<std::size_t>(skip));
+    // After a stop (Tk = 0) the candidate's first sample rests on the junction: a stride takes it
+    // too, else the chord past it cuts the corner, by more than a tight epsilon at any feed.
+    bool first_taken = stride == 1 || start <= r.a0 + skip || c.start_offset != 0.0 ||
+                       committed(start).velocity != AxisVector::Zero();
     for (std::int64_t k = r.a0 + skip; k <= r.a1; k = k + stride <= r.a1 || k == r.a1 ? k + stride : r.a1) {
         if (k > tail_tick_ + window_ticks_ && k < start - 1) k = start - 1;  // at rest until the start
+        if (!first_taken && k > start) {
+            first_taken = true;
+            if (!check_sample(w, with(c, start, committed(start)), start, contour_epsilon, c, start, false))
+                return false;
+        }
         if (!check_sample(w, with(c, k, committed(k)), k, contour_epsilon, c, start, stride == 1)) return false;
     }
     w.known = 0;  // the middle of a long pulse is skipped

@@ -41,8 +41,9 @@ public:
     void set_corner_tolerance(double epsilon, bool bound);
 
     // True when the candidate keeps every sample within tolerance and limits (stop scenario).
-    // stride > 1 looks at every stride-th sample only (and the last): a quick search that can
-    // miss a limit between its samples; only stride 1 decides.
+    // stride > 1 looks at every stride-th sample only (and the last, and after a stop the first,
+    // on the junction): a quick search that can miss a limit between its samples; only stride 1
+    // decides.
     bool feasible(const Candidate& c, int stride = 1) const;
 
     // Commits a candidate that was feasible (or a stop): its samples become the committed output.
