@@ -1,7 +1,9 @@
 // Seeded randomized suite: random 2-D and 3-D polylines with sharp and shallow corners, reversals,
 // collinear runs, zero-length, long and short blocks, 1-4 stages, fractional periods and times.
 // Invariants, measured on the sampled output: corner error <= epsilon at every blended corner,
-// end point exact, speed <= F, no NaN.
+// end point exact, speed <= F, no NaN. And from the planner's counts: no block refused, none
+// slowed below 0.1 % of its feed (where the feed search once gave up and went on unchecked).
+#include "support/counted_plan.hpp"
 #include "support/reference.hpp"
 #include "support/separation.hpp"
 
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 
@@ -104,20 +107,51 @@ int scaled(int count) {
     return v ? count * std::max(1, std::atoi(v)) : count;
 }
 
+// The planner's counts over a suite, printed for soak runs.
+struct Counts {
+    int programs = 0;
+    std::size_t blocks = 0;
+    Planner::Stats stats;
+    void add(const RandomProgram& p, const Planner::Stats& s) {
+        ++programs;
+        blocks += p.blocks.size();
+        stats.slowed += s.slowed;
+        stats.crawling += s.crawling;
+        stats.refused += s.refused;
+    }
+    ~Counts() {
+        std::printf("%d programs, %zu blocks: %llu slowed by the window check, %llu below 0.1 %% of their feed, %llu refused\n",
+                    programs, blocks, static_cast<unsigned long long>(stats.slowed),
+                    static_cast<unsigned long long>(stats.crawling), static_cast<unsigned long long>(stats.refused));
+    }
+};
+
+// Plans through the planner itself (plan_trajectory's loop) for its counts.
+Trajectory plan_checked(const RandomProgram& p, Counts& counts) {
+    test::CountedPlan plan = test::plan_counted(p.parameters, AxisVector::Zero(), p.blocks);
+    counts.add(p, plan.stats);
+    EXPECT_TRUE(plan.complete);
+    EXPECT_EQ(plan.stats.refused, 0u);
+    EXPECT_EQ(plan.stats.crawling, 0u);
+    return std::move(plan.trajectory);
+}
+
 void check_paths(std::uint64_t seed, int count, bool three_d, ToleranceMeaning meaning) {
     seed += seed_offset();
     count = scaled(count);
     std::mt19937_64 rng(seed);
+    Counts counts;
     for (int k = 0; k < count; ++k) {
         RandomProgram p = random_separated_program(rng, three_d);
         p.parameters.tolerance_meaning = meaning;
-        const Trajectory t = plan_trajectory(p.parameters, AxisVector::Zero(), p.blocks);
+        SCOPED_TRACE("seed " + std::to_string(seed) + " program " + std::to_string(k));
+        const Trajectory t = plan_checked(p, counts);
+        ASSERT_FALSE(::testing::Test::HasFailure());
         std::vector<AxisVector> points{AxisVector::Zero()};
         std::vector<const Block*> ending;  // block ending at each programmed point
         for (const Block& b : p.blocks)
             if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target), ending.push_back(&b);
         const Measured m = measure(t.samples, points, p.parameters.period);
-        SCOPED_TRACE("seed " + std::to_string(seed) + " program " + std::to_string(k));
 
         ASSERT_TRUE(m.finite);
         ASSERT_EQ(m.end_position, p.blocks.back().target);  // exact, bit for bit
@@ -144,13 +178,16 @@ TEST(RandomPaths, SpatialCornerPointTolerance) { check_paths(2, 1500, true, Tole
 
 TEST(RandomPaths, ContourToleranceHoldsOnTheWholePath) {
     std::mt19937_64 rng(3 + seed_offset());
+    Counts counts;
     for (int k = 0; k < scaled(800); ++k) {
         RandomProgram p = random_separated_program(rng, k % 2 == 0);
         p.parameters.tolerance_meaning = ToleranceMeaning::contour;
         double smallest = 1e300;
         for (Block& b : p.blocks) smallest = std::min(smallest, b.tolerance);
         for (Block& b : p.blocks) b.tolerance = smallest;
-        const Trajectory t = plan_trajectory(p.parameters, AxisVector::Zero(), p.blocks);
+        SCOPED_TRACE("program " + std::to_string(k));
+        const Trajectory t = plan_checked(p, counts);
+        ASSERT_FALSE(::testing::Test::HasFailure());
         std::vector<AxisVector> points{AxisVector::Zero()};
         for (const Block& b : p.blocks) points.push_back(b.target);
         const Measured m = measure(t.samples, points, p.parameters.period);

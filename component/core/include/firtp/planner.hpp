@@ -22,6 +22,9 @@
 #include <firtp/sampled_window.hpp>
 #include <firtp/types.hpp>
 
+#include <cstdint>
+#include <optional>
+
 namespace firtp {
 
 // What the planner decided at the junction between two blocks.
@@ -42,9 +45,20 @@ public:
 
     // Validates, plans and queues one block. Result::queue_full leaves everything as it was.
     // A zero-length block is accepted and skipped. When the block forms a corner with the
-    // previous one, *corner (if given) is filled and *has_corner set.
+    // previous one, *corner (if given) is filled and *has_corner set. Result::invalid_block also
+    // when no feed, down to the slowest pulse the clock holds, passes the window check (a stop
+    // slow enough always does, unless the committed samples themselves fail it): nothing is
+    // committed unchecked, and the tool rests at the previous block's end (Stats::refused).
     Result add(const Block& block, Interpolator& out, CornerReport* corner = nullptr,
                bool* has_corner = nullptr);
+
+    // Blocks counted since construction.
+    struct Stats {
+        std::uint64_t slowed = 0;    // planned below their feed (window check: tolerance or limits)
+        std::uint64_t crawling = 0;  // ... below 0.1 % of it
+        std::uint64_t refused = 0;   // no feed passed the check (see add)
+    };
+    const Stats& stats() const { return stats_; }
 
     // After the interpolator was reset or flushed: plan from rest at `position` (filter-clock tick).
     void reset(const AxisVector& position, std::int64_t tick = 0);
@@ -78,16 +92,18 @@ private:
 
     Start schedule(double tk, std::int64_t now) const;
     double latest_overlap(std::int64_t now) const;
-    Choice search_window(const AxisVector& delta, double length, double feed, double beta, double epsilon,
-                         std::int64_t now) const;
+    // None: no feed passes (add refuses the block).
+    std::optional<Choice> search_window(const AxisVector& delta, double length, double feed, double beta,
+                                        double epsilon, std::int64_t now) const;
     // The highest feed, up to `feed`, at which the block starting at `start` passes the window
-    // check (from rest or after a stop, where only the feed can keep the limits).
-    double feed_for_start(const AxisVector& delta, double length, double feed, const Start& start) const;
+    // check (from rest or after a stop, where only the feed can keep the limits); none: no feed.
+    std::optional<double> feed_for_start(const AxisVector& delta, double length, double feed, const Start& start) const;
 
     PlannerParameters parameters_;
     const FirChain* chain_;
     SampledWindow window_;
     Last last_;
+    Stats stats_;
 };
 
 }  // namespace firtp
