@@ -20,11 +20,15 @@ Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector
         for (; next < blocks.size(); ++next) {
             CornerReport corner;
             bool has_corner = false;
+            const std::uint64_t refused = planner.stats().refused;
             const Result result = planner.add(blocks[next], interpolator, &corner, &has_corner);
             if (result == Result::queue_full) break;
             if (result == Result::invalid_block)
-                throw std::invalid_argument("line " + std::to_string(blocks[next].line) +
-                                            ": invalid block (non-finite target, feed <= 0 or bad tolerance)");
+                throw std::invalid_argument(
+                    "line " + std::to_string(blocks[next].line) +
+                    (planner.stats().refused > refused
+                         ? ": no feed, down to a stop, keeps this block within its tolerance and the axis limits"
+                         : ": invalid block (non-finite target, feed <= 0 or bad tolerance)"));
             if (has_corner) trajectory.corners.push_back(corner);
         }
         AxisState state;
