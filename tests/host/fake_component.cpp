@@ -41,15 +41,15 @@ void FakeComponent::preload(std::int64_t other_program, int blocks) {
 
 // As the bridge: the crc first; a corrupted block is refused as corrupted and not accepted.
 void FakeComponent::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
-    const auto received = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
-    if (!received.problem) return on_block(&received.message);
+    const auto r = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
+    if (!r.problem) return on_block(&r.message);
     ++corrupted;
-    refuse(status_t::ERROR_CORRUPTED, "block: " + *received.problem);
+    refuse(status_t::ERROR_CORRUPTED, "block: " + *r.problem);
 }
 
 void FakeComponent::on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
-    const auto received = messages::receive<firtp_lcm::control_t>(buffer->data, buffer->data_size);
-    if (!received.problem) return on_control(&received.message);
+    const auto r = messages::receive<firtp_lcm::control_t>(buffer->data, buffer->data_size);
+    if (!r.problem) return on_control(&r.message);
     ++corrupted;
 }
 

@@ -220,6 +220,17 @@ TEST(Integrity, ReceiveNamesTheProblem) {
     EXPECT_TRUE(contains(*r.problem, "intact, but not a block_t of this version (")) << *r.problem;
     EXPECT_FALSE(r.decoded);
 
+    // A block_t from before the crc (as an older host sends it): its own fingerprint, no crc field.
+    Bytes old_version = seal_encoded(block);
+    old_version.resize(old_version.size() - 4);
+    const std::uint8_t old_fingerprint[8] = {0x9e, 0x47, 0x47, 0x86, 0x07, 0xe8, 0xd9, 0x8a};
+    std::memcpy(old_version.data(), old_fingerprint, 8);
+    r = receive<firtp_lcm::block_t>(old_version.data(), old_version.size());
+    ASSERT_TRUE(r.problem);
+    EXPECT_TRUE(contains(*r.problem, "corrupted: CRC mismatch (crc 0x")) << *r.problem;
+    EXPECT_TRUE(contains(*r.problem, "); its fingerprint 0x9e47478607e8d98a is not block_t's 0x")) << *r.problem;
+    EXPECT_TRUE(contains(*r.problem, ": damaged, or another type or version")) << *r.problem;
+
     Bytes longer = seal_encoded(block);  // a whole block and more: not one block
     longer.insert(longer.end() - 4, 0x00);
     const std::uint32_t fixed = crc32(longer.data(), longer.size() - 4);

@@ -16,6 +16,14 @@ std::uint32_t big_endian32(const std::uint8_t* p) {
     return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | std::uint32_t{p[3]};
 }
 
+// The first 8 bytes, big-endian (as many as there are).
+std::uint64_t fingerprint_of(const void* data, std::size_t size) {
+    std::uint64_t fingerprint = 0;
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    for (std::size_t i = 0; i < fingerprint_size && i < size; ++i) fingerprint = fingerprint << 8 | bytes[i];
+    return fingerprint;
+}
+
 }  // namespace
 
 std::uint32_t crc32(const void* data, std::size_t size) {
@@ -41,10 +49,19 @@ std::optional<std::string> integrity_problem(const void* data, std::size_t size)
     return text;
 }
 
+std::string fingerprint_note(const void* data, std::size_t size, const char* type, std::int64_t hash) {
+    if (data == nullptr || size < fingerprint_size) return "";
+    const std::uint64_t fingerprint = fingerprint_of(data, size);
+    if (fingerprint == static_cast<std::uint64_t>(hash)) return "";
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "; its fingerprint 0x%016" PRIx64 " is not %s's 0x%016" PRIx64 ": damaged, or another type or version",
+                  fingerprint, type, static_cast<std::uint64_t>(hash));
+    return text;
+}
+
 std::string not_this_type(const void* data, std::size_t size, const char* type) {
-    std::uint64_t fingerprint = 0;
-    const auto* bytes = static_cast<const std::uint8_t*>(data);
-    for (std::size_t i = 0; i < fingerprint_size && i < size; ++i) fingerprint = fingerprint << 8 | bytes[i];
+    const std::uint64_t fingerprint = fingerprint_of(data, size);
     char text[160];
     std::snprintf(text, sizeof text, "intact, but not a %s of this version (%zu bytes, fingerprint 0x%016" PRIx64 ")",
                   type, size, fingerprint);

@@ -98,6 +98,11 @@ template <class Message> int publish(lcm::LCM& lcm, const std::string& channel, 
 // "intact, but not a block_t of this version (120 bytes, fingerprint 0x0123456789abcdef)".
 std::string not_this_type(const void* data, std::size_t size, const char* type);
 
+// For damaged bytes whose fingerprint is not the type's (a sender of another version shows so):
+// "; its fingerprint 0x0123456789abcdef is not block_t's 0x...: damaged, or another type or
+// version", or "" when it is the type's.
+std::string fingerprint_note(const void* data, std::size_t size, const char* type, std::int64_t hash);
+
 template <class Message> struct Received {
     Message message{};                   // decoded; to be trusted only when there is no problem
     bool decoded = false;                // the bytes decode as a Message (if corrupted: only to name it)
@@ -105,13 +110,15 @@ template <class Message> struct Received {
 };
 
 // What every receiver does first with the bytes LCM delivered: the crc, then the decode. The
-// problem is integrity_problem()'s, or not_this_type()'s for intact bytes of another type.
+// problem is integrity_problem()'s (with fingerprint_note() when the bytes do not decode), or
+// not_this_type()'s for intact bytes of another type.
 template <class Message> Received<Message> receive(const void* data, std::size_t size) {
     Received<Message> r;
     r.problem = integrity_problem(data, size);
     const int n = size > 0x7fffffff ? -1 : static_cast<int>(size);
     r.decoded = n >= 0 && r.message.decode(data, 0, n) == n;
     if (!r.problem && !r.decoded) r.problem = not_this_type(data, size, Message::getTypeName());
+    else if (r.problem && !r.decoded) *r.problem += fingerprint_note(data, size, Message::getTypeName(), Message::getHash());
     return r;
 }
 
