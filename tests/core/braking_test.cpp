@@ -55,7 +55,7 @@ TEST(Braking, ContinuesThroughThePositionAtTheVelocityAndRestsExactly) {
         const FirChain chain(times);
         const BrakingPeaks peaks = braking_peaks(chain);
         const AxisVector p = test::xyz(12.5, -3.25, 7.0), v = test::xyz(80.0, -45.0, 10.0);
-        for (const double rate : {1.0, 0.37}) {  // 0.37: the clock has a fraction when the stop begins
+        for (const double rate : {1.0, 0.37}) {  // 0.37: an override in effect before the stop
             const Stop stop = brake(chain, p, v, 57, rate);
             EXPECT_LT((stop.first.position - p).cwiseAbs().maxCoeff(), 1e-12);
             EXPECT_LT((stop.first.velocity - v).cwiseAbs().maxCoeff(), 1e-9);

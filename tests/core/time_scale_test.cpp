@@ -5,10 +5,13 @@
 #include <firtp/interpolator.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
+#include <firtp/time_scale.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 using namespace firtp;
@@ -124,4 +127,58 @@ TEST(TimeScale, AbortStopsDropsTheRestAndPlansAfreshFromThere) {
     m.run(100000);
     EXPECT_EQ(m.samples.back().position, xyz(0, 0));
     for (const AxisState& s : m.samples) EXPECT_NEAR(s.position[1], 0.0, 1e-12);  // never went on to Y30
+}
+
+// A trim loses exactly the fraction asked, within half the rate limits, and ends at rate 1.
+TEST(TimeScale, TrimLosesTheFractionAlongADipWithinHalfTheRateLimits) {
+    for (const RateLimits limits : {RateLimits{}, RateLimits{0.8, 12.0}}) {
+        for (const double fraction : {1e-6, 0.25, 0.999}) {
+            TimeScale scale(limits);
+            scale.trim(fraction, 0.001);
+            double clock = 0.0, slope = 0.0, curvature = 0.0;
+            int ticks = 0;
+            for (; ticks < 100000 && (ticks == 0 || !scale.steady_at_one()); ++ticks) {
+                clock += scale.advance(0.001);
+                slope = std::max(slope, std::abs(scale.slope()));
+                curvature = std::max(curvature, std::abs(scale.curvature()));
+                ASSERT_LE(scale.rate(), 1.0);
+            }
+            EXPECT_NEAR(clock, ticks - fraction, 1e-12) << fraction;
+            EXPECT_LE(slope, 0.5 * limits.max_slope * 1.001);
+            EXPECT_LE(curvature, 0.5 * limits.max_curvature * 1.05);  // r'' is a difference of r' a period apart
+            EXPECT_EQ(scale.rate(), 1.0);
+        }
+    }
+}
+
+// After an override or a hold the filters' clock is a fraction of a period off the servo samples;
+// at rate 1 a trim brings it back, so the samples are again those the planner checked: the rest of
+// the program equals the plan without the change, a whole number of periods later. (Off the grid
+// the straight lines between samples cut a tight corner differently: 1.0011 of its tolerance was
+// measured in LcmFaults.LossyLink with another seed.)
+TEST(TimeScale, AfterAnOverrideOrAHoldTheSamplesComeBackOntoThePlannedGrid) {
+    auto program = [](Machine& m) {
+        for (int i = 0; i < 40; ++i) m.add(xyz(10.0 * (i + 1), i % 2 == 0 ? 5.0 : 0.0), 150.0);
+    };
+    Machine plain;
+    program(plain);
+    plain.run(100000);
+    struct Change { double rate; int from, to; };
+    for (const Change change : {Change{0.37, 500, 1234}, Change{0.0, 500, 530}, Change{0.0, 500, 1234}}) {
+        Machine changed;
+        program(changed);
+        changed.run(100000, [&](int k) {
+            if (k == change.from) changed.interpolator.set_rate(change.rate);
+            if (k == change.to) changed.interpolator.set_rate(1.0);
+        });
+        ASSERT_EQ(changed.samples.back().position, plain.samples.back().position);
+        // The last 1,500 samples (after the ramp and the trim): plain's, a whole number of periods later.
+        const std::size_t shift = changed.samples.size() - plain.samples.size();
+        double worst = 0.0;
+        for (std::size_t k = plain.samples.size() - 1500; k < plain.samples.size(); ++k)
+            worst = std::max(worst, (changed.samples[k + shift].position - plain.samples[k].position).cwiseAbs().maxCoeff());
+        EXPECT_LT(worst, 1e-9) << change.rate << " from " << change.from << " to " << change.to;
+        std::printf("rate %.2f from tick %d to %d: the rest runs %zu periods later, %.2g mm from the plan's samples\n",
+                    change.rate, change.from, change.to, shift, worst);
+    }
 }

@@ -83,10 +83,17 @@ void Interpolator::tick(AxisState& out) {
     ++ticks_;
     const bool moving = count_ > 0 && local_time(ring_[head_]) > 0.0;
     if (!moving) scale_.snap();  // nothing to ramp: an override set before a start applies at once
+    else if (clock_fraction_ > 0.0 && scale_.steady_at_one()) scale_.trim(clock_fraction_, period_);  // off the grid
     clock_fraction_ += scale_.advance(period_);
     const double whole = clock_fraction_ >= 1.0 ? static_cast<double>(static_cast<std::int64_t>(clock_fraction_)) : 0.0;
     clock_tick_ += static_cast<std::int64_t>(whole);
     clock_fraction_ -= whole;
+    // Back onto the planned sample grid: at rest at once (nothing moves), after a trim its rounding.
+    const bool rounding = scale_.steady_at_one() && (clock_fraction_ < 1e-9 || clock_fraction_ > 1.0 - 1e-9);
+    if (clock_fraction_ > 0.0 && (!moving || rounding)) {
+        if (!moving || clock_fraction_ > 0.5) ++clock_tick_;
+        clock_fraction_ = 0.0;
+    }
 }
 
 }  // namespace firtp

@@ -48,8 +48,34 @@ double braking_distance(double v, double reach, double period) {
 
 }  // namespace
 
+void TimeScale::trim(double periods, double period) {
+    if (!(periods > 0.0 && periods < 1.0)) return;
+    // Sum of the trapezoids over N periods: N - c N / 2. Peaks: r' = c pi / (N T), r'' = 2 c pi^2 / (N T)^2.
+    const double pi = 3.14159265358979323846;
+    const double by_slope = std::sqrt(4.0 * pi * periods / (period * limits_.max_slope));
+    const double by_curvature = std::cbrt(8.0 * pi * pi * periods / (period * period * limits_.max_curvature));
+    trim_ticks_ = static_cast<int>(std::min(std::ceil(std::max({by_slope, by_curvature, 8.0})), 1e6));
+    trim_step_ = 0;
+    trim_depth_ = 2.0 * periods / trim_ticks_;
+}
+
 double TimeScale::advance(double period) {
     const double before = rate_, slope_before = slope_;
+    if (trim_ticks_ > 0) {
+        if (target_ == 1.0) {
+            const double pi = 3.14159265358979323846, x = pi * ++trim_step_ / trim_ticks_;
+            rate_ = 1.0 - trim_depth_ * std::sin(x) * std::sin(x);
+            slope_ = -trim_depth_ * pi / (trim_ticks_ * period) * std::sin(2.0 * x);
+            if (trim_step_ == trim_ticks_) {
+                rate_ = 1.0;
+                slope_ = 0.0;
+                trim_ticks_ = 0;
+            }
+            curvature_ = (slope_ - slope_before) / period;
+            return 0.5 * (before + rate_);
+        }
+        trim_ticks_ = 0;  // a new target: the S-curve goes on from this rate and slope
+    }
     const double gap = target_ - rate_;
     if (gap == 0.0 && slope_ == 0.0) {
         curvature_ = 0.0;

@@ -38,7 +38,14 @@ public:
         rate_ = target_;
         slope_ = 0.0;
         curvature_ = 0.0;
+        trim_ticks_ = 0;
     }
+
+    // At rate 1 after a ramp, lose `periods` (0..1) of the clock along a smooth dip of the rate,
+    // 1 - c sin^2(pi k / N), within half the rate limits: the servo samples come back onto the
+    // planned sample grid, whose polyline the planner checked. A new target ends it.
+    void trim(double periods, double period);
+    bool steady_at_one() const { return rate_ == 1.0 && target_ == 1.0 && slope_ == 0.0 && trim_ticks_ == 0; }
 
     // One servo period: returns how far the filters' clock moves, in periods (exactly 1 at rate 1).
     double advance(double period);
@@ -49,6 +56,9 @@ private:
     double rate_ = 1.0;
     double slope_ = 0.0;
     double curvature_ = 0.0;
+    int trim_ticks_ = 0;  // N, 0: no trim
+    int trim_step_ = 0;
+    double trim_depth_ = 0.0;  // c = 2 periods / N
 };
 
 }  // namespace firtp
