@@ -327,21 +327,21 @@ void expect_exactly_once_and_on_target(const Network& net, const Program& progra
 TEST(LcmFaults, LossyLinkDeliversEveryBlockOnceAndTheMachineStaysOnThePath) {
     Faults down{0.10, 0.05, 0.06, 30};
     Faults up{0.10, 0.05, 0.06, 20};
-    Network net(down, up, 12);
+    Network net(down, up, 11);
     const Program program = random_program(3, 150);
     net.program = &program;
     host::Host h(*net.host_lcm, program, net.options(501));
     EXPECT_EQ(net.run(h, 600000, 3000, 4500), host::Result::done) << h.error();
     expect_exactly_once_and_on_target(net, program, 501);
     const double corners = worst_corner_share(net, program);
-    EXPECT_LE(corners, 1.0 + 1e-3);
+    EXPECT_LE(corners, 1.0 + 1e-9);  // off the sample grid after the hold it was 1.0011 (fixed: TimeScale::trim)
     const host::Statistics s = h.statistics();
     const Link& down_link = net.to_component;
     const Link& up_link = net.to_host;
     std::printf("lossy link: %lld blocks published for %zu (%lld go-backs), %lld refused by the bridge; down: %lld "
                 "dropped, %lld duplicated, %lld delayed, %lld corrupted (%lld type hash, %lld truncated, %lld payload); "
                 "up: %lld dropped, %lld duplicated, %lld corrupted (%lld type hash, %lld truncated, %lld payload); "
-                "%lld periods; worst corner %.3f of its tolerance; |v|,|a| <= %.4f of the limits\n",
+                "%lld periods; worst corner %.6f of its tolerance; |v|,|a| <= %.4f of the limits\n",
                 static_cast<long long>(s.blocks_published), program.blocks.size(), static_cast<long long>(s.go_backs),
                 static_cast<long long>(s.rejected), static_cast<long long>(down_link.dropped),
                 static_cast<long long>(down_link.duplicated), static_cast<long long>(down_link.delayed),
@@ -417,7 +417,7 @@ TEST(LcmFaults, DelayedBlocksStopTheMachineAtTheLastBlockAndItGoesOn) {
     EXPECT_TRUE(rested);
     ASSERT_EQ(net.run(h, 600000), host::Result::done) << h.error();
     expect_exactly_once_and_on_target(net, program, 601);
-    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-3);
+    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-9);
     EXPECT_GT(net.to_component.delayed, 5);
     std::printf("delayed link: %lld blocks published for %zu, %lld go-backs, %lld refused (late copies)\n",
                 static_cast<long long>(h.statistics().blocks_published), program.blocks.size(),
@@ -451,7 +451,7 @@ TEST(LcmFaults, HostDiesAndARestartedHostResumesTheProgramExactlyOnce) {
     host::Host second(*net.host_lcm, program, net.options(701));
     EXPECT_EQ(net.run(second, 600000), host::Result::done) << second.error();
     expect_exactly_once_and_on_target(net, program, 701);
-    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-3);
+    EXPECT_LE(worst_corner_share(net, program), 1.0 + 1e-9);
     std::printf("host died after %lld of %zu blocks were accepted (%lld sent); the restarted host published %lld "
                 "(its first window before a status: repeats, refused); the bridge forwarded %lld in all\n",
                 static_cast<long long>(ran), program.blocks.size(), static_cast<long long>(sent),
