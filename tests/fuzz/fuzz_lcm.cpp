@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "../messages/reference_crc32.hpp"
 #include "require.hpp"
 
 namespace {
@@ -56,15 +57,7 @@ firtp::ComponentSettings settings() {
     return s;
 }
 
-// CRC-32 (IEEE 802.3) bit by bit, from its definition.
-std::uint32_t reference_crc32(const std::uint8_t* data, std::size_t size) {
-    std::uint32_t crc = 0xFFFFFFFFu;
-    for (std::size_t i = 0; i < size; ++i) {
-        crc ^= data[i];
-        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return crc ^ 0xFFFFFFFFu;
-}
+using firtp::test::reference_crc32;
 
 // The definition in block_t.lcm: the last 4 bytes, big-endian, are the CRC-32 of the others.
 bool reference_intact(const std::vector<std::uint8_t>& bytes) {

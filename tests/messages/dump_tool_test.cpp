@@ -41,12 +41,7 @@ void write_bytes(lcm::LogFile& log, const std::string& channel, std::int64_t tim
 template <class Message> void write(lcm::LogFile& log, const std::string& channel, std::int64_t timestamp,
                                     Message message) {
     std::vector<unsigned char> bytes = seal_encoded(message);
-    lcm::LogEvent event{};
-    event.timestamp = timestamp;
-    event.channel = channel;
-    event.datalen = static_cast<std::int32_t>(bytes.size());
-    event.data = bytes.data();
-    log.writeEvent(&event);
+    write_bytes(log, channel, timestamp, bytes);
 }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

@@ -2,6 +2,7 @@
 // over the encoding without its last 4 bytes, which hold it), seal / intact / receive, and the
 // property it is there for: any single-bit (and any two-bit) damage anywhere in an encoded message
 // is detected, including the damage LCM's decode lets through as a valid message.
+#include "reference_crc32.hpp"
 #include "sample.hpp"
 
 #include <cstdio>
@@ -15,62 +16,14 @@ namespace firtp::messages {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
+using firtp::test::reference_crc32;
+using test::sample_axis_state;
+using test::sample_control;
+using test::sample_status;
 
-// CRC-32 bit by bit from its definition (reflected polynomial 0xEDB88320, initial value and final
-// xor 0xFFFFFFFF), independent of Boost.
-std::uint32_t reference_crc32(const std::uint8_t* data, std::size_t size) {
-    std::uint32_t crc = 0xFFFFFFFFu;
-    for (std::size_t i = 0; i < size; ++i) {
-        crc ^= data[i];
-        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return crc ^ 0xFFFFFFFFu;
-}
 
-firtp_lcm::control_t sample_control() {
-    firtp_lcm::control_t c{};
-    c.utime = 123456789;
-    c.session = 1000;
-    c.seq = 42;
-    c.feed_scale = 0.75;
-    c.hold = 1;
-    c.abort = 0;
-    return c;
-}
 
-firtp_lcm::status_t sample_status() {
-    firtp_lcm::status_t s{};
-    s.utime = 11;
-    s.seq = 3;
-    s.tick = 4000;
-    s.program = 7;
-    s.next_seq = 13;
-    s.queue_depth = 5;
-    s.queue_free = 11;
-    s.current_line = 38;
-    s.state = firtp_lcm::status_t::MOVING;
-    s.feed_scale = 1.0;
-    s.error_code = firtp_lcm::status_t::ERROR_SEQUENCE_GAP;
-    s.error_text = "block seq 15 (line 41): sequence gap";
-    s.rejected = 2;
-    s.corrupted = 1;
-    return s;
-}
 
-firtp_lcm::axis_state_t sample_axis_state() {
-    firtp_lcm::axis_state_t a{};
-    a.utime = 5;
-    a.seq = 9;
-    a.tick = 4001;
-    a.time = 4.001;
-    a.line = 40;
-    for (int i = 0; i < 9; ++i) {
-        a.position[i] = 0.25 * i - 1.0;
-        a.velocity[i] = 10.0 * i;
-        a.acceleration[i] = -100.0 * i;
-    }
-    return a;
-}
 
 std::uint32_t last_four(const Bytes& bytes) {
     const std::size_t n = bytes.size();

@@ -8,6 +8,9 @@
 namespace firtp::messages {
 namespace {
 
+using test::sample_axis_state;
+using test::sample_status;
+
 template <class Message> std::vector<unsigned char> encode(const Message& message) {
     std::vector<unsigned char> bytes(static_cast<std::size_t>(message.getEncodedSize()));
     EXPECT_EQ(message.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
@@ -24,38 +27,7 @@ void write_event(lcm::LogFile& log, const std::string& channel, std::int64_t tim
     ASSERT_EQ(log.writeEvent(&event), 0);
 }
 
-firtp_lcm::status_t sample_status() {
-    firtp_lcm::status_t status{};
-    status.utime = 11;
-    status.seq = 3;
-    status.tick = 4000;
-    status.program = 7;
-    status.next_seq = 13;
-    status.queue_depth = 5;
-    status.queue_free = 59;
-    status.current_line = 38;
-    status.state = firtp_lcm::status_t::HOLDING;
-    status.feed_scale = 0.5;
-    status.error_code = firtp_lcm::status_t::ERROR_SEQUENCE_GAP;
-    status.error_text = "block seq 15: sequence gap";
-    status.rejected = 2;
-    return status;
-}
 
-firtp_lcm::axis_state_t sample_axis_state() {
-    firtp_lcm::axis_state_t state{};
-    state.utime = 12;
-    state.seq = 99;
-    state.tick = 4001;
-    state.time = 4.001;
-    state.line = 38;
-    for (int axis = 0; axis < max_axes; ++axis) {
-        state.position[axis] = axis + 0.25;
-        state.velocity[axis] = -axis * 1.5;
-        state.acceleration[axis] = axis * 100.0;
-    }
-    return state;
-}
 
 firtp_lcm::control_t sample_control() {
     firtp_lcm::control_t control{};

@@ -24,6 +24,50 @@ inline Block sample_block() {
 
 inline firtp_lcm::block_t sample_message(std::int64_t seq = 12) { return to_message(sample_block(), 7, seq, 1000); }
 
+inline firtp_lcm::status_t sample_status() {
+    firtp_lcm::status_t status{};
+    status.utime = 11;
+    status.seq = 3;
+    status.tick = 4000;
+    status.program = 7;
+    status.next_seq = 13;
+    status.queue_depth = 5;
+    status.queue_free = 59;
+    status.current_line = 38;
+    status.state = firtp_lcm::status_t::HOLDING;
+    status.feed_scale = 0.5;
+    status.error_code = firtp_lcm::status_t::ERROR_SEQUENCE_GAP;
+    status.error_text = "block seq 15: sequence gap";
+    status.rejected = 2;
+    return status;
+}
+
+inline firtp_lcm::axis_state_t sample_axis_state() {
+    firtp_lcm::axis_state_t state{};
+    state.utime = 12;
+    state.seq = 99;
+    state.tick = 4001;
+    state.time = 4.001;
+    state.line = 38;
+    for (int axis = 0; axis < max_axes; ++axis) {
+        state.position[axis] = axis + 0.25;
+        state.velocity[axis] = -axis * 1.5;
+        state.acceleration[axis] = axis * 100.0;
+    }
+    return state;
+}
+
+inline firtp_lcm::control_t sample_control() {
+    firtp_lcm::control_t c{};
+    c.utime = 123456789;
+    c.session = 1000;
+    c.seq = 42;
+    c.feed_scale = 0.75;
+    c.hold = 1;
+    c.abort = 0;
+    return c;
+}
+
 // A file name unique to this test and process, removed when the object goes.
 class TempFile {
 public:
