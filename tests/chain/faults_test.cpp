@@ -464,10 +464,9 @@ TEST(LcmFaults, HostDiesAndARestartedHostResumesTheProgramExactlyOnce) {
 // nothing had happened. The host's next blocks are a gap for the new component (it expects seq 1
 // of a new program), so nothing of the old program runs there, and the host fails once the
 // component's statuses have named another program for 1 s. (Before, the host waited for ever,
-// reporting nothing: it had no block outstanding, so its resend timeout never fired.) Measured and
-// documented, not fixed: the restarted component
-// starts at the origin (firtp.so has no position feedback input), a jump of its commanded position
-// if its enable is on (docs/HARDENING.md).
+// reporting nothing: it had no block outstanding, so its resend timeout never fired.) This chain
+// has no machine, so firtp.axis.N.pos-fb is unconnected and the new component starts at 0; with
+// the feedback connected it starts from the axes and brakes them (restart_test.cpp).
 TEST(LcmFaults, ComponentRestartMidProgramRunsNothingOfItAndTheHostFails) {
     Network net({}, {}, 41);
     const Program program = random_program(6, 120);
