@@ -4,11 +4,11 @@
 // the junction; the chord past it, from the previous block's last decelerating sample, cut the
 // corner by more than a tight epsilon whatever the new block's feed. The full check passed the
 // stop at full feed all along.
-#include "support/counted_plan.hpp"
 #include "support/reference.hpp"
 
 #include <firtp/measure.hpp>
 #include <firtp/sampled_window.hpp>
+#include <firtp/trajectory.hpp>
 
 #include <gtest/gtest.h>
 
@@ -67,17 +67,17 @@ TEST(FeedSearch, QuickCheckOfAStopTakesTheSampleOnTheJunction) {
 TEST(FeedSearch, StopAfterAShortBlockKeepsTheFeed) {
     const PlannerParameters p = one_stage();
     const std::vector<Block> blocks = stop_after_short_block();
-    const test::CountedPlan plan = test::plan_counted(p, AxisVector::Zero(), blocks);
-    ASSERT_TRUE(plan.complete);
+    Trajectory plan;
+    ASSERT_NO_THROW(plan = plan_trajectory(p, AxisVector::Zero(), blocks));
     EXPECT_EQ(plan.stats.slowed, 0u);
     EXPECT_EQ(plan.stats.crawling, 0u);
-    ASSERT_EQ(plan.trajectory.corners.size(), 1u);
-    EXPECT_EQ(plan.trajectory.corners[0].tk, 0.0);
+    ASSERT_EQ(plan.corners.size(), 1u);
+    EXPECT_EQ(plan.corners[0].tk, 0.0);
     // Two pulses and two filter delays, each start on a servo sample.
     const double closed_form = (50.0 + short_length) / feed + 2 * p.filters.delay();
-    EXPECT_NEAR(plan.trajectory.cycle_time, closed_form, 2 * p.period);
+    EXPECT_NEAR(plan.cycle_time, closed_form, 2 * p.period);
     const std::vector<AxisVector> points{AxisVector::Zero(), blocks[0].target, blocks[1].target};
-    const Measured m = measure(plan.trajectory.samples, points, p.period);
+    const Measured m = measure(plan.samples, points, p.period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
     EXPECT_LE(m.corner_errors[0], epsilon);
     EXPECT_LE(m.max_path_speed, feed * (1 + 1e-9));
@@ -91,26 +91,14 @@ TEST(FeedSearch, FeedFarAboveTheVelocityLimitIsLoweredUntilTheLimitHolds) {
     for (int a = 0; a < 3; ++a) p.limits.axis[a] = {1.0, 100.0, 0.0};
     const std::vector<Block> blocks = {{test::xyz(10, 0), 1e4, Termination::blend, 0.01, MotionType::feed, 1},
                                        {test::xyz(10, 10), 1e4, Termination::blend, 0.01, MotionType::feed, 2}};
-    const test::CountedPlan plan = test::plan_counted(p, AxisVector::Zero(), blocks);
-    ASSERT_TRUE(plan.complete);
+    Trajectory plan;
+    ASSERT_NO_THROW(plan = plan_trajectory(p, AxisVector::Zero(), blocks));
     EXPECT_EQ(plan.stats.refused, 0u);
     EXPECT_EQ(plan.stats.crawling, 2u);  // 1 mm/s of 10^4
     const double v_limit = planned_limits(p).axis[0].max_velocity;
     double v = 0.0;
-    for (const AxisState& s : plan.trajectory.samples) v = std::max(v, s.velocity.cwiseAbs().maxCoeff());
+    for (const AxisState& s : plan.samples) v = std::max(v, s.velocity.cwiseAbs().maxCoeff());
     EXPECT_LE(v, v_limit * (1 + 1e-9));
     EXPECT_GT(v, 0.5 * v_limit);  // bisected up to the limit, not far below it
-    EXPECT_EQ(plan.trajectory.samples.back().position, blocks.back().target);
-}
-
-// The suites count through plan_counted: it is plan_trajectory's loop.
-TEST(FeedSearch, CountedPlanIsPlanTrajectory) {
-    const PlannerParameters p = one_stage();
-    const std::vector<Block> blocks = stop_after_short_block();
-    const Trajectory a = plan_trajectory(p, AxisVector::Zero(), blocks);
-    const Trajectory b = test::plan_counted(p, AxisVector::Zero(), blocks).trajectory;
-    ASSERT_EQ(a.samples.size(), b.samples.size());
-    for (std::size_t i = 0; i < a.samples.size(); ++i) ASSERT_EQ(a.samples[i].position, b.samples[i].position) << i;
-    EXPECT_EQ(a.corners.size(), b.corners.size());
-    EXPECT_EQ(a.cycle_time, b.cycle_time);
+    EXPECT_EQ(plan.samples.back().position, blocks.back().target);
 }

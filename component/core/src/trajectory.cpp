@@ -37,6 +37,7 @@ Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector
         if (next == blocks.size() && interpolator.idle()) break;
     }
     trajectory.cycle_time = trajectory.samples.back().time;
+    trajectory.stats = planner.stats();
     return trajectory;
 }
 

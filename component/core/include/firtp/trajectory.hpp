@@ -15,6 +15,7 @@ struct Trajectory {
     std::vector<CornerReport> corners; // one per junction, in program order
     AxisVector start = AxisVector::Zero();
     double cycle_time = 0.0;           // time of the last sample
+    Planner::Stats stats;              // the planner's counts: blocks slowed, crawling
 };
 
 // Runs planner and interpolator together as the servo thread would; throws std::invalid_argument
