@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace firtp {
 
@@ -51,7 +52,7 @@ double braking_distance(double v, double reach, double period) {
 void TimeScale::trim(double periods, double period) {
     if (!(periods > 0.0 && periods < 1.0)) return;
     // Sum of the trapezoids over N periods: N - c N / 2. Peaks: r' = c pi / (N T), r'' = 2 c pi^2 / (N T)^2.
-    const double pi = 3.14159265358979323846;
+    constexpr double pi = std::numbers::pi;
     const double by_slope = std::sqrt(4.0 * pi * periods / (period * limits_.max_slope));
     const double by_curvature = std::cbrt(8.0 * pi * pi * periods / (period * period * limits_.max_curvature));
     trim_ticks_ = static_cast<int>(std::min(std::ceil(std::max({by_slope, by_curvature, 8.0})), 1e6));
@@ -63,9 +64,9 @@ double TimeScale::advance(double period) {
     const double before = rate_, slope_before = slope_;
     if (trim_ticks_ > 0) {
         if (target_ == 1.0) {
-            const double pi = 3.14159265358979323846, x = pi * ++trim_step_ / trim_ticks_;
+            const double x = std::numbers::pi * ++trim_step_ / trim_ticks_;
             rate_ = 1.0 - trim_depth_ * std::sin(x) * std::sin(x);
-            slope_ = -trim_depth_ * pi / (trim_ticks_ * period) * std::sin(2.0 * x);
+            slope_ = -trim_depth_ * std::numbers::pi / (trim_ticks_ * period) * std::sin(2.0 * x);
             if (trim_step_ == trim_ticks_) {
                 rate_ = 1.0;
                 slope_ = 0.0;
