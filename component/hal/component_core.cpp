@@ -51,18 +51,16 @@ void ComponentCore::drop_everything(const AxisVector& at) {
     halted_ = unchecked_halted_ = true;  // the interrupted program must not continue from here
 }
 
-AxisVector ComponentCore::feedback_position(const ComponentInputs& in) const {
-    AxisVector at = last_.position;  // a non-finite feedback keeps the last command
+AxisVector ComponentCore::feedback(const AxisVector& pins, const AxisVector& otherwise) const {
+    AxisVector value = otherwise;
     for (int a = 0; a < settings_.axes; ++a)
-        if (std::isfinite(in.position_feedback[a])) at[a] = in.position_feedback[a];
-    return at;
+        if (std::isfinite(pins[a])) value[a] = pins[a];
+    return value;
 }
 
 void ComponentCore::take_over(const ComponentInputs& in) {
-    const AxisVector at = feedback_position(in);
-    AxisVector velocity = AxisVector::Zero();
-    for (int a = 0; a < settings_.axes; ++a)
-        if (std::isfinite(in.velocity_feedback[a])) velocity[a] = in.velocity_feedback[a];
+    const AxisVector at = feedback(in.position_feedback, last_.position);
+    const AxisVector velocity = feedback(in.velocity_feedback, AxisVector::Zero());
     interpolator_.reset(at);
     planner_.reset(at, interpolator_.now_tick());
     unchecked_halted_ = false;  // enable rose: the operator's reset for blocks with seq 0
@@ -126,7 +124,7 @@ int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) 
 
 void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
-        const AxisVector at = feedback_position(in);
+        const AxisVector at = feedback(in.position_feedback, last_.position);
         if (enabled_ || !started_) drop_everything(at);  // drives are off: no deceleration, no queue
         enabled_ = false;
         braking_now_ = false;

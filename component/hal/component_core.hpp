@@ -94,7 +94,8 @@ private:
     void fail(ComponentError error);
     void drop_everything(const AxisVector& at);
     void take_over(const ComponentInputs& in);  // first period, or enable rose
-    AxisVector feedback_position(const ComponentInputs& in) const;
+    // The used axes' finite feedback pins, `otherwise` where a pin is not finite (or the axis unused).
+    AxisVector feedback(const AxisVector& pins, const AxisVector& otherwise) const;
 
     ComponentSettings settings_;
     FirChain chain_;
