@@ -14,6 +14,8 @@ namespace {
 constexpr double collinear_angle = 1e-9;  // rad: joined into one pulse below this turn
 constexpr double max_pulse_periods = 1e16;  // longest pulse Tv = L / F, in servo periods (int64 ticks reach 9.2e18)
 
+double longest_pulse(double period) { return max_pulse_periods * period; }  // s
+
 bool finite(const AxisVector& v) { return v.allFinite(); }
 
 // t = tick * period + offset, offset normalised into [0, period).
@@ -89,7 +91,7 @@ double Planner::latest_overlap(std::int64_t now) const {
 std::optional<Planner::Choice> Planner::search_window(const AxisVector& delta, double length, double feed,
                                                       double beta, double epsilon, std::int64_t now) const {
     const double tk_high = latest_overlap(now);
-    const double slowest = length / (max_pulse_periods * parameters_.period);
+    const double slowest = length / longest_pulse(parameters_.period);
     auto candidate = [&](double tk, double f) {
         const Start s = schedule(tk, now);
         return Candidate{delta, length / f, s.tick, s.offset};
@@ -140,7 +142,7 @@ std::optional<Planner::Choice> Planner::search_window(const AxisVector& delta, d
 std::optional<double> Planner::feed_for_start(const AxisVector& delta, double length, double feed,
                                               const Start& start) const {
     return highest_feasible_feed([&](double f) { return window_.feasible({delta, length / f, start.tick, start.offset}); },
-                                 feed, 14, length / (max_pulse_periods * parameters_.period));
+                                 feed, 14, length / longest_pulse(parameters_.period));
 }
 
 Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner, bool* has_corner) {
@@ -155,7 +157,7 @@ Result Planner::add(const Block& block, Interpolator& out, CornerReport* corner,
     if (length < min_block_length) return Result::ok;
     // The pulse must fit the servo clock (int64 ticks): a feed of 1e-300, or a length that
     // overflows, gives Tv = inf, which would be converted to a tick count (undefined behaviour).
-    if (!(length / block.feed <= max_pulse_periods * parameters_.period)) return Result::invalid_block;
+    if (!(length / block.feed <= longest_pulse(parameters_.period))) return Result::invalid_block;
     if (out.free() == 0) return Result::queue_full;
 
     const double period = parameters_.period;
