@@ -85,6 +85,7 @@ const char* describe(AddStatus status) {
         case AddStatus::no_filters:
             return "no filter times: give t1 (and t2) to firtp_tp or set the axes' MAX_VELOCITY, MAX_ACCELERATION";
         case AddStatus::window_too_long:
+            static_assert(max_window_periods == 20000.0, "the text names the bound");
             return "the filter delay T1 + ... + Tn is longer than 20000 servo periods: lower T1 (t1, else "
                    "MAX_VELOCITY / MAX_ACCELERATION) or T2 (t2, else MAX_ACCELERATION / jerk)";
     }

@@ -27,6 +27,7 @@ const char* validate(const FilterTimes& filters) {
 
 const char* validate_window(const FilterTimes& filters, double period) {
     if (!(std::isfinite(period) && period > 0.0)) return "the servo period must be positive and finite";
+    static_assert(max_window_periods == 20000.0, "the text below names the bound");
     if (!(filters.delay() <= max_window_periods * period))
         return "the filter delay T1 + ... + Tn is longer than 20000 servo periods (20 s at 1 ms)";
     return "";
