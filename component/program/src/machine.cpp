@@ -29,6 +29,27 @@ std::optional<double> positive(const IniFile& ini, std::string_view section, std
     return value;
 }
 
+// Reads a key that, when present, must be a whole number from lo to hi (`range` says it: "1 to 4").
+std::optional<double> whole(const IniFile& ini, std::string_view section, std::string_view key, double lo, double hi,
+                            const char* range) {
+    const auto value = ini.number(section, key);
+    if (value && (*value != std::floor(*value) || *value < lo || *value > hi))
+        fail(ini, *ini.find(section, key), cat("must be a whole number from ", range));
+    return value;
+}
+
+// Hands a key's text, when present, to `parse`; its ConfigError is refused naming the key.
+template <class Parse>
+void parse_key(const IniFile& ini, std::string_view section, std::string_view key, Parse&& parse) {
+    const IniFile::Entry* e = ini.find(section, key);
+    if (e == nullptr) return;
+    try {
+        parse(e->value);
+    } catch (const ConfigError& error) {
+        fail(ini, *e, error.what());
+    }
+}
+
 void read_period(const IniFile& ini, MachineConfig& m) {
     const auto ns = positive(ini, "EMCMOT", "SERVO_PERIOD");
     if (!ns) return;
@@ -83,32 +104,17 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
         m.max_feed_override = *o;
     }
 
-    if (const auto stages = ini.number("FIRTP", "STAGES")) {
-        if (*stages != std::floor(*stages) || *stages < 1 || *stages > max_stages)
-            fail(ini, *ini.find("FIRTP", "STAGES"), "must be a whole number from 1 to 4");
-        m.stages = static_cast<int>(*stages);
-    }
+    if (const auto stages = whole(ini, "FIRTP", "STAGES", 1, max_stages, "1 to 4")) m.stages = static_cast<int>(*stages);
     for (std::size_t i = 0; i < max_stages; ++i) {
         const auto t = positive(ini, "FIRTP", cat("T", std::to_string(i + 1)));
         if (!t) continue;
         if (m.given_times.size() <= i) m.given_times.resize(i + 1, 0.0);
         m.given_times[i] = *t;
     }
-    try {
-        if (const IniFile::Entry* e = ini.find("FIRTP", "MODES")) m.tuning.modes = parse_modes(e->value, m.limits.axes);
-    } catch (const ConfigError& error) {
-        fail(ini, *ini.find("FIRTP", "MODES"), error.what());
-    }
-    try {
-        if (const IniFile::Entry* e = ini.find("FIRTP", "ROBUST")) parse_robust(e->value, m.tuning);
-    } catch (const ConfigError& error) {
-        fail(ini, *ini.find("FIRTP", "ROBUST"), error.what());
-    }
-    if (const auto blocks = ini.number("FIRTP", "MAX_PROGRAM_BLOCKS")) {
-        if (*blocks != std::floor(*blocks) || *blocks < 1 || *blocks > 1e15)  // 1e15: exact in a double
-            fail(ini, *ini.find("FIRTP", "MAX_PROGRAM_BLOCKS"), "must be a whole number from 1 to 1e15");
+    parse_key(ini, "FIRTP", "MODES", [&](const std::string& text) { m.tuning.modes = parse_modes(text, m.limits.axes); });
+    parse_key(ini, "FIRTP", "ROBUST", [&](const std::string& text) { parse_robust(text, m.tuning); });
+    if (const auto blocks = whole(ini, "FIRTP", "MAX_PROGRAM_BLOCKS", 1, 1e15, "1 to 1e15"))  // 1e15: exact in a double
         m.max_program_blocks = static_cast<std::size_t>(*blocks);
-    }
     if (const auto tol = positive(ini, "FIRTP", "TOLERANCE")) m.default_tolerance = *tol;
     if (const auto chord = positive(ini, "FIRTP", "ARC_CHORD_TOLERANCE")) m.arc_chord_tolerance = *chord;
     if (const IniFile::Entry* e = ini.find("FIRTP", "TOLERANCE_MEANING")) {
