@@ -3,7 +3,8 @@
 
     examples/linuxcnc/run.py PROGRAM.ngc [--tp firtp_tp|tpmod] [--tp-params "t1=0.148 t2=0.089"]
         [--module build/linuxcnc/firtp_tp.so] [--check-tool build/bin/firtp-tp-check]
-        [--out DIR] [--scenario ACTIONS] [-- CHECK OPTIONS...]
+        [--out DIR] [--scenario ACTIONS] [--set SECTION:KEY=VALUE ...] [--lcnc TREE]
+        [-- CHECK OPTIONS...]
 
 It copies this configuration (firtp_tp.ini, machine.hal, record.hal, bin/firtp-headless) into a
 scratch directory, sets [TRAJ]TPMOD, runs `linuxcnc -r` there (as `nobody` when run as root:
@@ -12,6 +13,12 @@ firtp-tp-check on the recording (CHECK OPTIONS, e.g. --tolerance 0.5 --limits --
 passed on). --module places that firtp_tp.so in LinuxCNC's module directory for the run (rtapi_app
 loads modules from there only) and puts back what was there. Only one HAL session can run on a
 machine: it waits up to 60 s for another to end, and cleans up with `halrun -U`.
+
+--set SECTION:KEY=VALUE (repeatable) sets a key of the scratch copy's INI, e.g.
+--set DISPLAY:MAX_FEED_OVERRIDE=1.0. --lcnc TREE runs another LinuxCNC, built run-in-place in TREE
+(its scripts/rip-environment; e.g. a build of LinuxCNC master, whose [TRAJ]PLANNER_TYPE = 1 is a
+jerk-limited S-curve planner), instead of the installed one; --tp then names a planner module of
+that tree (tpmod).
 
 Exit status: 0 program completed and every check passed, 1 otherwise, 77 LinuxCNC (or the module)
 is not available (a skipped test).
@@ -38,8 +45,60 @@ class Skip(Exception):
     pass
 
 
-def hal_running():
-    return subprocess.run([REALTIME, "status"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
+class LinuxCNC:
+    """Which LinuxCNC runs: the installed one (tree None) or a run-in-place build in tree."""
+
+    def __init__(self, tree=None):
+        self.tree = os.path.abspath(tree) if tree else None
+        if self.tree is None:
+            self.env = dict(os.environ)
+            self.realtime = REALTIME
+            return
+        rip = os.path.join(self.tree, "scripts", "rip-environment")
+        self.realtime = os.path.join(self.tree, "scripts", "realtime")
+        missing = [f for f in (rip, self.realtime, os.path.join(self.tree, "scripts", "linuxcnc"),
+                               os.path.join(self.tree, "bin", "rtapi_app"), os.path.join(self.tree, "bin", "milltask"),
+                               os.path.join(self.tree, "rtlib", "motmod.so")) if not os.path.exists(f)]
+        if missing:
+            raise Skip("%s is not a built run-in-place LinuxCNC tree (no %s)" % (self.tree, ", ".join(missing)))
+        # Its environment (PATH, PYTHONPATH, ...), from a system PATH: Debian's python3, not a pyenv shim.
+        base = dict(os.environ, PATH="/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin")
+        for name in ("PYTHONPATH", "PYTHONHOME", "VIRTUAL_ENV", "PYENV_VERSION"):
+            base.pop(name, None)
+        out = subprocess.run(["bash", "-c", '. "$1" >/dev/null && env -0', "bash", rip], env=base, capture_output=True,
+                             check=True).stdout
+        self.env = dict(item.split("=", 1) for item in out.decode().split("\0") if "=" in item)
+
+    def available(self):
+        return (shutil.which("linuxcnc", path=self.env.get("PATH")) is not None and os.path.exists(self.realtime))
+
+    def name(self):
+        return "LinuxCNC in " + self.tree if self.tree else "LinuxCNC"
+
+
+def hal_running(lcnc=None):
+    """Any HAL session (rtapi_app) on this machine: an installed and a run-in-place one share the SysV keys."""
+    realtime = lcnc.realtime if lcnc is not None else REALTIME
+    if not os.path.exists(realtime):
+        realtime = REALTIME
+    return subprocess.run([realtime, "status"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
+
+
+def set_ini(text, section, key, value):
+    """Sets KEY = VALUE in [SECTION] of an INI text: replaces the key's lines there, or adds it."""
+    lines = text.split("\n")
+    start = next((i for i, l in enumerate(lines) if l.strip() == "[%s]" % section), None)
+    if start is None:
+        return text.rstrip("\n") + "\n\n[%s]\n%s = %s\n" % (section, key, value)
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("[")), len(lines))
+    found = [i for i in range(start + 1, end) if re.match(r"\s*%s\s*=" % re.escape(key), lines[i])]
+    if found:
+        lines[found[0]] = "%s = %s" % (key, value)
+        for i in reversed(found[1:]):
+            del lines[i]
+    else:
+        lines.insert(start + 1, "%s = %s" % (key, value))
+    return "\n".join(lines)
 
 
 def as_user_prefix(work):
@@ -87,7 +146,7 @@ class PlacedModule:
         self.installed = None
 
 
-def prepare(work, program, tpmod):
+def prepare(work, program, tpmod, ini_set=()):
     for name in CONFIG_FILES:
         source = os.path.join(HERE, name)
         if os.path.isdir(source):
@@ -101,12 +160,15 @@ def prepare(work, program, tpmod):
     if n != 1:
         raise RuntimeError("firtp_tp.ini has no single TPMOD line")
     text = re.sub(r"(?m)^OPEN_FILE = .*$", "OPEN_FILE = program.ngc", text)
+    for section, key, value in ini_set:
+        text = set_ini(text, section, key, value)
     open(ini, "w").write(text)
     return ini
 
 
-def run_linuxcnc(work, prefix, timeout, scenario=""):
-    env = dict(os.environ, HOME=work, FIRTP_SCENARIO=scenario)
+def run_linuxcnc(work, prefix, timeout, scenario="", lcnc=None):
+    lcnc = lcnc or LinuxCNC()
+    env = dict(lcnc.env, HOME=work, FIRTP_SCENARIO=scenario)
     log = open(os.path.join(work, "linuxcnc.log"), "w")
     command = prefix + ["env", "HOME=" + work, "FIRTP_SCENARIO=" + scenario, "linuxcnc", "-r", "firtp_tp.ini"]
     try:
@@ -116,9 +178,9 @@ def run_linuxcnc(work, prefix, timeout, scenario=""):
         status = -1
     finally:
         log.close()
-        if hal_running():
-            subprocess.run(prefix + ["env", "HOME=" + work, "halrun", "-U"], cwd=work, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, timeout=30)
+        if hal_running(lcnc):
+            subprocess.run(prefix + ["env", "HOME=" + work, "halrun", "-U"], cwd=work, env=env,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=30)
     return status
 
 
@@ -133,28 +195,31 @@ def find_tool(given):
 
 
 def run(program, tp="firtp_tp", tp_params="", module=None, check_tool=None, out=None, check_args=(),
-        timeout=180, quiet=False, scenario=""):
-    """Runs one program; returns (status, report dict or None)."""
-    if shutil.which("linuxcnc") is None or not os.path.exists(REALTIME):
-        raise Skip("LinuxCNC is not installed (linuxcnc-uspace)")
+        timeout=180, quiet=False, scenario="", ini_set=(), lcnc=None):
+    """Runs one program; returns (status, report dict or None). ini_set: (section, key, value) set in the
+    scratch INI; lcnc: a LinuxCNC (a run-in-place tree) instead of the installed one."""
+    lcnc = lcnc or LinuxCNC()
+    if not lcnc.available():
+        raise Skip("LinuxCNC is not installed (linuxcnc-uspace)" if lcnc.tree is None
+                   else "%s has no linuxcnc script or realtime" % lcnc.tree)
     tool = find_tool(check_tool)
     work = tempfile.mkdtemp(prefix="firtp-lcnc-tp.")
     placed = None
     try:
         placed = PlacedModule(module if tp == "firtp_tp" else None, work)
         for _ in range(60):  # one HAL session per machine: wait for someone else's
-            if not hal_running():
+            if not hal_running(lcnc):
                 break
             time.sleep(1)
         else:
             raise RuntimeError("another HAL session (rtapi_app) is still running after 60 s")
-        prepare(work, program, (tp + " " + tp_params).strip())
+        prepare(work, program, (tp + " " + tp_params).strip(), ini_set)
         prefix, uid, gid = as_user_prefix(work)
         for root, dirs, files in os.walk(work):
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
         began = time.time()
-        status = run_linuxcnc(work, prefix, timeout, scenario)
+        status = run_linuxcnc(work, prefix, timeout, scenario, lcnc)
         wall = time.time() - began
         result_path = os.path.join(work, "result.json")
         result = json.load(open(result_path)) if os.path.exists(result_path) else {"completed": False,
@@ -171,8 +236,8 @@ def run(program, tp="firtp_tp", tp_params="", module=None, check_tool=None, out=
             report["completed"] = result.get("completed", False)
             report["errors"] = result.get("errors", [])
         if not quiet:
-            print("%s with %s: linuxcnc exit %d in %.1f s, program %s" % (
-                os.path.basename(program), tp, status, wall,
+            print("%s with %s%s: linuxcnc exit %d in %.1f s, program %s" % (
+                os.path.basename(program), tp, " (%s)" % lcnc.name() if lcnc.tree else "", status, wall,
                 "completed" if result.get("completed") else "NOT completed"))
             for e in result.get("errors", []):
                 print("  LinuxCNC error: " + e)
@@ -207,14 +272,26 @@ def main():
     parser.add_argument("--check-tool", help="firtp-tp-check (default: build/bin or build-tp/bin)")
     parser.add_argument("--out", help="keep the recording, result and report here")
     parser.add_argument("--timeout", type=float, default=180)
+    parser.add_argument("--set", action="append", default=[], metavar="SECTION:KEY=VALUE",
+                        help="set a key of the run's INI, e.g. DISPLAY:MAX_FEED_OVERRIDE=1.0 (repeatable)")
+    parser.add_argument("--lcnc", metavar="TREE",
+                        help="run a run-in-place LinuxCNC build in TREE (scripts/rip-environment) instead of the "
+                             "installed one")
     parser.add_argument("--scenario", default="",
                         help="operator actions while it runs, e.g. 'feed=0.5@0.1,pause@0.4,resume@1.2' or 'abort@0.5'")
     argv = sys.argv[1:]
     check = argv[argv.index("--") + 1:] if "--" in argv else []
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
+    ini_set = []
+    for item in a.set:
+        m = re.match(r"^([^:=]+):([^=]+)=(.*)$", item)
+        if not m:
+            parser.error("--set %s: SECTION:KEY=VALUE" % item)
+        ini_set.append(tuple(x.strip() for x in m.groups()))
     try:
         status, _ = run(os.path.abspath(a.program), a.tp, a.tp_params if a.tp == "firtp_tp" else "", a.module,
-                        a.check_tool, a.out, check, a.timeout, scenario=a.scenario)
+                        a.check_tool, a.out, check, a.timeout, scenario=a.scenario, ini_set=ini_set,
+                        lcnc=LinuxCNC(a.lcnc) if a.lcnc else None)
     except Skip as e:
         print("SKIPPED: %s" % e)
         return SKIP
