@@ -1,88 +1,270 @@
 #!/usr/bin/env python3
-"""Stock tpmod against firtp_tp on the same programs, in LinuxCNC 2.9, side by side.
+"""Cycle time of five programs under LinuxCNC's planners and firtp_tp, in one run series, side by side.
 
-    examples/linuxcnc/compare.py [--module build/linuxcnc/firtp_tp.so] [--check-tool build/bin/firtp-tp-check]
-        [--readme examples/linuxcnc/README.md]
+    examples/linuxcnc/compare.py [--master TREE] [--module build/linuxcnc/firtp_tp.so]
+        [--check-tool build/bin/firtp-tp-check] [--readme examples/linuxcnc/README.md]
 
-Each program runs headless through run.py twice, once with LinuxCNC's stock planner and once
-with firtp_tp, on this directory's machine (X Y Z, 300 mm/s, 5000 mm/s^2, 1 ms). The recording is
-measured by firtp-tp-check: cycle time, largest distance from the programmed path, largest axis
-acceleration and jerk from 1 ms differences, and the CPU time per servo period of
-motion-controller (tpRunCycle inside) and motion-command-handler (tpAdd* inside), from their
-HAL .time pins. With --readme the table replaces the one between the markers in that file.
-Takes about a minute and a half; one HAL session at a time.
+The programs (issue 13): examples/diamond.ngc (F15000 G64 P0.5), corner90.ngc (F3000 G64 P0.1),
+polygon360.ngc (a closed 360-gon, R20, 0.35 mm chords, F15000 G64 P0.5 Q0), cam_contour.ngc and
+arcs.ngc. Each runs headless through run.py on this directory's machine (X Y Z, 300 mm/s,
+5000 mm/s^2 every axis, 1 ms servo = trajectory period), with [DISPLAY]MAX_FEED_OVERRIDE = 1.0, under
+
+  stock       LinuxCNC 2.9's planner (tpmod), as installed; no jerk limit
+  firtp 5e6   firtp_tp jerk=5000000 (module parameter; [AXIS_*]MAX_JERK set to match for firtp-tp-check)
+  firtp 1e5   firtp_tp jerk=100000
+  S-curve     with --master TREE: LinuxCNC master built run-in-place in TREE (scripts/rip-environment),
+              its stock tpmod with [TRAJ]PLANNER_TYPE = 1 (the jerk-limited S-curve planner),
+              [TRAJ]MAX_LINEAR_JERK and [AXIS_*]/[JOINT_*]MAX_JERK = 1e5, then 5e6
+
+and one more firtp_tp run, the diamond with the paper's filters (t1=0.148 t2=0.089 jerk=100000), in the
+detail table only. firtp-tp-check measures each recording: cycle time (first moving sample to rest at
+the end), the largest corner error (closest approach to a programmed corner point) and contour error
+(distance from the programmed path), per-axis acceleration and jerk from 1 ms differences, and CPU
+time per servo period of motion-controller (tpRunCycle) and motion-command-handler (tpAdd*).
+
+Printed: the cycle-time table with ratios to the stock planner and firtp_tp's errors and peaks, the
+targets of issue 13 per program (jerk 5e6: firtp <= 1.00 x stock; jerk 1e5: firtp <= max(0.8 x
+S-curve 1e5, stock); on the diamond and the 90° corner the share of P and of the acceleration limit
+firtp_tp uses), notes (runs that failed, rest off the end, go beyond G64 P or above their jerk
+limit), then the detail table of every run and firtp_tp's own pins. Without --master
+(or when TREE is not built) the S-curve columns say "-" and the second target is not judged. With
+--readme the tables replace those between the markers in that file. One HAL session at a time; about
+5 minutes with --master, 2 without.
 """
 import argparse
 import os
 import re
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import run  # noqa: E402
 
 EXAMPLES = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-# program, what it is, firtp_tp's parameters
+# program, what it is
 PROGRAMS = [
-    ("diamond.ngc", "diamond, F15000 G64 P0.5 (the paper's T1 148 ms, T2 89 ms)",
-     "t1=0.148 t2=0.089 jerk=100000 tolerance=0.05"),
-    ("diamond.ngc", "diamond, F15000 G64 P0.5 (T1 60, T2 50 ms from the limits)", "jerk=100000 tolerance=0.05"),
-    ("cam_contour.ngc", "cam_contour: 2,603 segments, G64 P0.02 Q0", "jerk=100000 tolerance=0.05"),
-    ("arcs.ngc", "arcs: G2/G3 in 3 planes, helix, G64 P0.02", "jerk=100000 tolerance=0.05"),
+    ("diamond.ngc", "diamond, F15000 G64 P0.5"),
+    ("corner90.ngc", "90° corner, F3000 G64 P0.1"),
+    ("polygon360.ngc", "360-gon R20 (0.35 mm chords), F15000 G64 P0.5 Q0"),
+    ("cam_contour.ngc", "cam_contour: 2,603 segments, F3000 G64 P0.02 Q0"),
+    ("arcs.ngc", "arcs: G2/G3 in 3 planes, helix, F2400 G64 P0.02"),
+]
+
+# The paper's filters on the diamond (firtp_tp only; detail table).
+PAPER = ("diamond.ngc", "diamond, the paper's filters t1=0.148 t2=0.089", "t1=0.148 t2=0.089 jerk=100000 tolerance=0.05")
+
+COMMON = [("DISPLAY", "MAX_FEED_OVERRIDE", "1.0")]
+ACC_LIMIT = 5000.0  # every axis' MAX_ACCELERATION in firtp_tp.ini, mm/s²
+AXES, JOINTS = ("X", "Y", "Z"), (0, 1, 2)
+
+
+def firtp_planner(jerk):
+    settings = COMMON + [("AXIS_" + a, "MAX_JERK", "%g" % jerk) for a in AXES]
+    return {"tp": "firtp_tp", "params": "jerk=%d tolerance=0.05" % jerk, "set": settings, "jerk": jerk,
+            "master": False}
+
+
+def scurve_planner(jerk):
+    settings = COMMON + [("TRAJ", "PLANNER_TYPE", "1"), ("TRAJ", "MAX_LINEAR_JERK", "%g" % jerk)]
+    settings += [("AXIS_" + a, "MAX_JERK", "%g" % jerk) for a in AXES]
+    settings += [("JOINT_%d" % j, "MAX_JERK", "%g" % jerk) for j in JOINTS]
+    return {"tp": "tpmod", "params": "", "set": settings, "jerk": jerk, "master": True}
+
+
+# key, label in the detail table, how it runs
+PLANNERS = [
+    ("stock", "stock 2.9 (tpmod)", {"tp": "tpmod", "params": "", "set": COMMON, "jerk": None, "master": False}),
+    ("firtp_5e6", "firtp_tp jerk=5e6", firtp_planner(5000000)),
+    ("firtp_1e5", "firtp_tp jerk=1e5", firtp_planner(100000)),
+    ("scurve_1e5", "master S-curve jerk=1e5", scurve_planner(100000)),
+    ("scurve_5e6", "master S-curve jerk=5e6", scurve_planner(5000000)),
 ]
 
 BEGIN = "<!-- compare.py: begin -->"
 END = "<!-- compare.py: end -->"
 
 
-def row(label, tp, report):
+def g64_p(path):
+    """The program's first G64 P (its tolerance)."""
+    m = re.search(r"G64\s*P\s*([0-9.]+)", open(path).read(), re.I)
+    return float(m.group(1)) if m else None
+
+
+def good(report):
+    return report is not None and report.get("completed")
+
+
+def seconds(report):
     if report is None:
-        return "| %s | %s | failed | | | | | |" % (label, tp)
+        return "failed"
+    if not report.get("completed"):
+        return "%.3f s (not completed)" % report["cycle_time_s"]
+    return "%.3f s" % report["cycle_time_s"]
+
+
+def ratio(report, stock):
+    if not good(report) or not good(stock):
+        return "-"
+    return "%.2f" % (report["cycle_time_s"] / stock["cycle_time_s"])
+
+
+def errors_and_peaks(report, p):
+    if report is None:
+        return "-"
+    return "%.3f / %.3f mm (P %g); %.0f; %.3g" % (
+        report["max_corner_error_mm"], report["max_contour_error_mm"], p, max(report["max_axis_acceleration"]),
+        max(report["max_axis_jerk"]))
+
+
+def detail_row(label, planner, report):
+    if report is None:
+        return "| %s | %s | failed | | | | | | |" % (label, planner)
     ctl, cmd = report["motion_controller"], report["motion_command_handler"]
-    completed = "" if report.get("completed") else " (not completed)"
-    return "| %s | %s | %.3f s%s | %.4f mm | %.0f | %.3g | %.1f / %.1f / %.0f µs | %.1f / %.0f µs |" % (
-        label, tp, report["cycle_time_s"], completed, report["max_contour_error_mm"],
+    return "| %s | %s | %s | %.4f mm | %.4f mm | %.0f | %.3g | %.1f / %.1f / %.0f µs | %.1f / %.0f µs |" % (
+        label, planner, seconds(report), report["max_corner_error_mm"], report["max_contour_error_mm"],
         max(report["max_axis_acceleration"]), max(report["max_axis_jerk"]),
         ctl["median_us"], ctl["p99_us"], ctl["max_us"], cmd["p99_us"], cmd["max_us"])
 
 
+def targets(label, p, r, scurve, corners):
+    """Issue 13's targets for one program, as lines of text."""
+    stock, f5, f1, s1 = r.get("stock"), r.get("firtp_5e6"), r.get("firtp_1e5"), r.get("scurve_1e5")
+    out = ["- %s:" % label]
+    tol = p * (1 + 1e-9) + 0.001  # arcs run as chords of 0.001 mm sagitta
+
+    def within(report):
+        if not good(report):
+            return ""
+        ok = report["max_corner_error_mm"] <= tol and report["max_contour_error_mm"] <= tol
+        return "; within P %g: %s" % (p, "yes" if ok else "NO (corner %.4f, contour %.4f mm)" % (
+            report["max_corner_error_mm"], report["max_contour_error_mm"]))
+
+    if good(f5) and good(stock):
+        x = f5["cycle_time_s"] / stock["cycle_time_s"]
+        out.append("  jerk 5e6: firtp %.3f s <= 1.00 x stock %.3f s: %s (%.2fx)%s" % (
+            f5["cycle_time_s"], stock["cycle_time_s"], "met" if x <= 1.0 else "NOT met", x, within(f5)))
+    else:
+        out.append("  jerk 5e6: not judged (a run failed)")
+    if not scurve:
+        out.append("  jerk 1e5: not judged (no S-curve runs: --master)")
+    elif good(f1) and good(stock) and good(s1):
+        bound = max(0.8 * s1["cycle_time_s"], stock["cycle_time_s"])
+        out.append("  jerk 1e5: firtp %.3f s <= max(0.8 x S-curve %.3f s, stock %.3f s) = %.3f s: %s (%.2fx the bound)%s" % (
+            f1["cycle_time_s"], s1["cycle_time_s"], stock["cycle_time_s"], bound,
+            "met" if f1["cycle_time_s"] <= bound else "NOT met", f1["cycle_time_s"] / bound, within(f1)))
+    else:
+        out.append("  jerk 1e5: not judged (a run failed)")
+    if corners:  # a few corners: how much of the tolerance and the acceleration firtp_tp uses
+        for name, report in (("5e6", f5), ("1e5", f1)):
+            if good(report):
+                out.append("  jerk %s: corner error %.2f of P (target >= 0.9 where no limit binds), peak axis "
+                           "acceleration %.2f of the limit (target >= 0.95)" % (
+                               name, report["max_corner_error_mm"] / p, max(report["max_axis_acceleration"]) / ACC_LIMIT))
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--master", metavar="TREE",
+                        help="LinuxCNC master built run-in-place in TREE: adds its S-curve planner (PLANNER_TYPE 1)")
     parser.add_argument("--module", help="this build's firtp_tp.so (placed in LinuxCNC's module directory for the runs)")
     parser.add_argument("--check-tool", help="firtp-tp-check")
-    parser.add_argument("--readme", help="write the table between the markers in this file")
+    parser.add_argument("--readme", help="write the tables between the markers in this file")
+    parser.add_argument("--no-detail", action="store_true", help="skip the paper's-filters run and the detail tables")
     a = parser.parse_args()
 
-    lines = ["| program | planner | cycle time | max contour error | max axis acc (mm/s²) | max axis jerk (mm/s³) "
-             "| motion-controller median / p99 / max | motion-command-handler p99 / max |",
-             "|---|---|---|---|---|---|---|---|"]
+    began = time.time()
+    master = None
+    if a.master:
+        try:
+            master = run.LinuxCNC(a.master)
+            if not master.available():
+                raise run.Skip("%s has no linuxcnc script or realtime" % a.master)
+        except Exception as e:  # any reason (not built, no rip-environment): skip the columns, say why
+            print("S-curve columns skipped: %s" % e, flush=True)
+            master = None
+    planners = [p for p in PLANNERS if master is not None or not p[2]["master"]]
+
+    detail = ["| program | planner | cycle time | max corner error | max contour error | max axis acc (mm/s²) "
+              "| max axis jerk (mm/s³) | motion-controller median / p99 / max | motion-command-handler p99 / max |",
+              "|---|---|---|---|---|---|---|---|---|"]
     extra = []
+    notes = []
+    results = []
+
+    def one(path, label, name, how, params=None):
+        p = g64_p(path)
+        status, report = run.run(path, how["tp"], how["params"] if params is None else params,
+                                 a.module if how["tp"] == "firtp_tp" else None, a.check_tool, None, [], quiet=True,
+                                 ini_set=how["set"], lcnc=master if how["master"] else None)
+        detail.append(detail_row(label, name, report))
+        print(detail[-1], flush=True)
+        if report is None or not report.get("completed"):
+            notes.append("%s, %s: %s" % (label, name, "; ".join(report.get("errors", [])) if report else "no recording"))
+        elif report.get("end_error_mm", 0.0) > 1e-6:
+            notes.append("%s, %s: the tool rests %.3g mm from the program's end" % (label, name, report["end_error_mm"]))
+        if p is not None and report is not None and max(report["max_corner_error_mm"],
+                                                        report["max_contour_error_mm"]) > p + 0.001 + 1e-9:
+            notes.append("%s, %s: corner error %.4f mm, contour error %.4f mm: beyond G64 P%g (+ 0.001 mm chords)" % (
+                label, name, report["max_corner_error_mm"], report["max_contour_error_mm"], p))
+        if how["jerk"] and report is not None and max(report["max_axis_jerk"]) > 1.2 * how["jerk"]:
+            notes.append("%s, %s: axis jerk %.3g mm/s³ above the limit %.3g (1 ms differences)" % (
+                label, name, max(report["max_axis_jerk"]), how["jerk"]))
+        if how["tp"] == "firtp_tp" and report is not None and "firtp_tp" in report:
+            t = report["firtp_tp"]
+            extra.append("| %s | %s | %.1f / %.1f µs (%d) | %.1f / %.1f / %.0f µs | %.1f / %.0f µs | %d |" % (
+                label, name, t["add"]["median_us"], t["add"]["max_us"], t["add"]["cycles"],
+                t["run_cycle"]["median_us"], t["run_cycle"]["p99_us"], t["run_cycle"]["max_us"],
+                t["planning"]["p99_us"], t["planning"]["max_us"], t["most_blocks_planned_in_a_period"]))
+        return report
+
     try:
-        for program, label, params in PROGRAMS:
+        for program, label in PROGRAMS:
             path = os.path.join(EXAMPLES, program)
-            for tp in ("tpmod", "firtp_tp"):
-                status, report = run.run(path, tp, params if tp == "firtp_tp" else "", a.module, a.check_tool,
-                                         None, [], quiet=True)
-                lines.append(row(label, tp, report))
-                print(lines[-1], flush=True)
-                if tp == "firtp_tp" and report is not None and "firtp_tp" in report:
-                    t = report["firtp_tp"]
-                    extra.append("| %s | %.1f / %.1f µs (%d) | %.1f / %.1f / %.0f µs | %.1f / %.0f µs | %d |" % (
-                        label, t["add"]["median_us"], t["add"]["max_us"], t["add"]["cycles"],
-                        t["run_cycle"]["median_us"], t["run_cycle"]["p99_us"], t["run_cycle"]["max_us"],
-                        t["planning"]["p99_us"], t["planning"]["max_us"], t["most_blocks_planned_in_a_period"]))
+            r = {name: one(path, label, title, how) for name, title, how in planners}
+            results.append((label, g64_p(path), r, program in ("diamond.ngc", "corner90.ngc")))
+        if not a.no_detail:
+            program, label, params = PAPER
+            one(os.path.join(EXAMPLES, program), label, "firtp_tp " + params.split(" tolerance")[0], PLANNERS[2][2],
+                params)
     except run.Skip as e:
         print("SKIPPED: %s" % e)
         return run.SKIP
-    lines += ["", "firtp_tp's own pins (rtapi_get_time, ns) on the same runs:", "",
-              "| program | tpAdd* median / max (adds) | tpRunCycle median / p99 / max | planning p99 / max "
-              "| most blocks planned in a period |", "|---|---|---|---|---|"] + extra
-    table = "\n".join(lines)
+
+    scurve = master is not None
+    main_table = ["| program | stock 2.9 | firtp_tp jerk=5e6 | ratio | firtp_tp jerk=1e5 | ratio "
+                  "| master S-curve jerk=1e5 | jerk=5e6 | firtp_tp 5e6: corner / contour error; acc; jerk "
+                  "| firtp_tp 1e5: corner / contour error; acc; jerk |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+    checks = []
+    for label, p, r, corners in results:
+        stock = r.get("stock")
+        main_table.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            label, seconds(stock), seconds(r.get("firtp_5e6")), ratio(r.get("firtp_5e6"), stock),
+            seconds(r.get("firtp_1e5")), ratio(r.get("firtp_1e5"), stock),
+            seconds(r.get("scurve_1e5")) if scurve else "-", seconds(r.get("scurve_5e6")) if scurve else "-",
+            errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
+        checks += targets(label, p, r, scurve, corners)
+
+    elapsed = time.time() - began
+    text = ["Cycle times, one run series (%s; %.0f s); ratios to the stock planner; firtp_tp's largest corner "
+            "and contour errors against the program's G64 P, peak axis acceleration (mm/s²) and jerk (mm/s³) "
+            "from 1 ms differences:" % (time.strftime("%Y-%m-%d"), elapsed), ""]
+    text += main_table + ["", "Targets of issue 13:", ""] + checks
+    if notes:
+        text += ["", "Notes:", ""] + ["- " + n for n in notes]
+    if not a.no_detail:
+        text += ["", "Every run:", ""] + detail
+        text += ["", "firtp_tp's own pins (rtapi_get_time, ns) on the same runs:", "",
+                 "| program | planner | tpAdd* median / max (adds) | tpRunCycle median / p99 / max | planning p99 / max "
+                 "| most blocks planned in a period |", "|---|---|---|---|---|---|"] + extra
+    table = "\n".join(text)
     print()
     print(table)
     if a.readme:
-        text = open(a.readme).read()
-        new, n = re.subn(re.escape(BEGIN) + ".*?" + re.escape(END), BEGIN + "\n" + table + "\n" + END, text,
+        old = open(a.readme).read()
+        new, n = re.subn(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: BEGIN + "\n" + table + "\n" + END, old,
                          flags=re.S)
         if n != 1:
             print("%s has no %s ... %s markers" % (a.readme, BEGIN, END))
