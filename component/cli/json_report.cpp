@@ -1,5 +1,7 @@
 #include "json_report.hpp"
 
+#include <firtp/kernel.hpp>
+
 #include <cmath>
 #include <numbers>
 
@@ -17,15 +19,25 @@ const char* meaning_name(ToleranceMeaning meaning) {
 }
 
 json machine_json(const PlanRun& run) {
-    const FilterTimes& f = run.parameters.filters;
-    json times = json::array();
-    for (int i = 0; i < f.stages; ++i) times.push_back(f.T[static_cast<std::size_t>(i)]);
-    return {{"period_s", run.parameters.period},
-            {"stages", f.stages},
-            {"T_s", times},
-            {"delay_s", f.delay()},
-            {"default_tolerance_mm", run.machine.default_tolerance},
-            {"tolerance_meaning", meaning_name(run.parameters.tolerance_meaning)}};
+    json machine = {{"smoothing", run.parameters.fixed_chain ? "fixed_chain" : "limits"},
+                    {"period_s", run.parameters.period},
+                    {"default_tolerance_mm", run.machine.default_tolerance},
+                    {"tolerance_meaning", meaning_name(run.parameters.tolerance_meaning)}};
+    if (run.parameters.fixed_chain) {  // the paper's chain
+        const FilterTimes& f = run.parameters.filters;
+        json times = json::array();
+        for (int i = 0; i < f.stages; ++i) times.push_back(f.T[static_cast<std::size_t>(i)]);
+        machine["stages"] = f.stages;
+        machine["T_s"] = times;
+        machine["delay_s"] = f.delay();
+    } else {
+        machine["jerk_time_s"] = jerk_time(run.parameters.limits);
+    }
+    return machine;
+}
+
+json axis_name(int axis) {
+    return axis >= 0 ? json(std::string(1, axis_letters[static_cast<std::size_t>(axis)])) : json(nullptr);
 }
 
 json corners_json(const PlanRun& run) {
@@ -33,15 +45,22 @@ json corners_json(const PlanRun& run) {
     for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) {
         const CornerReport& c = run.trajectory.corners[i];
         const auto& measured = run.corner_errors[i];
-        corners.push_back({{"line", c.line},
-                           {"point", xyz(c.point)},
-                           {"beta_deg", c.beta * 180.0 / std::numbers::pi},
-                           {"tk_s", c.tk},
-                           {"tk_tolerance_s", c.tk_tolerance},
-                           {"epsilon_mm", finite_or_null(c.epsilon)},
-                           {"predicted_error_mm", c.predicted_error},
-                           {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
-                           {"exact_stop", c.exact_stop}});
+        json corner = {{"line", c.line},
+                       {"point", xyz(c.point)},
+                       {"beta_deg", c.beta * 180.0 / std::numbers::pi},
+                       {"speed_in_mm_s", c.speed_in},
+                       {"speed_out_mm_s", c.speed_out},
+                       {"bound", describe(c.bound)},
+                       {"bound_axis", axis_name(c.axis)},
+                       {"epsilon_mm", finite_or_null(c.epsilon)},
+                       {"predicted_error_mm", c.predicted_error},
+                       {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
+                       {"exact_stop", c.exact_stop}};
+        if (run.parameters.fixed_chain) {
+            corner["tk_s"] = c.tk;
+            corner["tk_tolerance_s"] = c.tk_tolerance;
+        }
+        corners.push_back(corner);
     }
     return corners;
 }
@@ -66,7 +85,8 @@ nlohmann::json json_report(const PlanRun& run, const std::string& program_name) 
             {"machine", machine_json(run)},
             {"blocks", run.points.size() - 1},
             {"cycle_time_s", run.trajectory.cycle_time},
-            {"closed_form_cycle_time_s", run.closed_form_cycle_time},
+            {"closed_form_cycle_time_s", run.parameters.fixed_chain ? json(run.closed_form_cycle_time) : json(nullptr)},
+            {"feed_time_s", run.feed_time},
             {"corners", corners_json(run)},
             {"measured", measured_json(run)}};
 }

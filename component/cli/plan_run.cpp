@@ -79,10 +79,14 @@ void measure_plan(PlanRun& run) {
     for (std::size_t i = 0; i < corners.size(); ++i)
         run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
 
-    const double td = run.parameters.filters.delay();
-    double gaps = 0.0;
-    for (const CornerReport& c : corners) gaps += td - c.tk;
-    run.closed_form_cycle_time = run.points.size() > 1 ? tv_sum + gaps + td : 0.0;
+    run.feed_time = tv_sum;
+    run.closed_form_cycle_time = 0.0;
+    if (run.parameters.fixed_chain && run.points.size() > 1) {
+        const double td = run.parameters.filters.delay();
+        double gaps = 0.0;
+        for (const CornerReport& c : corners) gaps += td - c.tk;
+        run.closed_form_cycle_time = tv_sum + gaps + td;
+    }
 }
 
 }  // namespace firtp::cli

@@ -21,7 +21,8 @@ struct PlanRun {
     std::vector<AxisVector> points;  // start, then the end of every block that moves
     Measured measured;
     std::vector<std::optional<double>> corner_errors;  // measured, one per trajectory.corners entry
-    double closed_form_cycle_time = 0.0;  // sum(Tv) + sum(Td - Tk) + Td
+    double closed_form_cycle_time = 0.0;  // the paper's fixed chain: sum(Tv) + sum(Td - Tk) + Td
+    double feed_time = 0.0;               // sum(Tv): every block at its programmed feed, no corners
 };
 
 // The machine: INI or built-in, then the flag overrides (UsageError names a bad flag).

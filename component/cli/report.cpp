@@ -3,6 +3,7 @@
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"
 #include "output_files.hpp"
+#include "plan_text.hpp"
 #include "plot.hpp"
 #include "vibration_plot.hpp"
 #include "vibration_study.hpp"
@@ -37,17 +38,8 @@ std::vector<int> moving_axes(const PlanRun& run) {
     return axes;
 }
 
-std::string filters_text(const PlanRun& run) {
-    const FilterTimes& f = run.parameters.filters;
-    std::string times;
-    for (int i = 0; i < f.stages; ++i) times += cat(i ? ", " : "", ms(f.T[static_cast<std::size_t>(i)]));
-    return cat(std::to_string(f.stages), " FIR stages, T = ", times, " ms (Td ", ms(f.delay()), " ms), period ",
-               ms(run.parameters.period), " ms, tolerance bounds the ",
-               run.parameters.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner point");
-}
-
 std::string modes_text(const MachineConfig& machine) {
-    if (machine.tuning.modes.empty()) return "none given (filter times from the limits)";
+    if (machine.tuning.modes.empty()) return "none given";
     std::string text;
     for (std::size_t i = 0; i < machine.tuning.modes.size(); ++i) {
         const StructuralMode& m = machine.tuning.modes[i];
@@ -72,10 +64,11 @@ void summary_table(std::ostream& md, const PlanRun& run, const std::string& name
     md << "| | |\n|---|---|\n"
        << "| program | `" << name << "`: " << run.points.size() - 1 << " blocks that move, " << run.trajectory.corners.size()
        << " corners (" << exact << " exact stop) |\n"
-       << "| machine | " << filters_text(run) << " |\n"
+       << "| machine | " << machine_text(run) << " |\n"
        << "| structural modes | " << modes_text(run.machine) << " |\n"
-       << "| cycle time | " << fixed_text(run.trajectory.cycle_time, 4) << " s (closed form "
-       << fixed_text(run.closed_form_cycle_time, 4) << " s: sum(Tv) + sum(Td - Tk) + Td) |\n"
+       << "| cycle time | " << fixed_text(run.trajectory.cycle_time, 4) << " s (" << reference_time_text(run)
+       << (run.parameters.fixed_chain ? ": sum(Tv) + sum(Td - Tk) + Td" : ": sum(Tv)") << ") |\n"
+       << "| junctions | slowest " << slowest_junction_text(run) << " |\n"
        << "| corner error | max " << fixed_text(worst, 4) << " mm; " << over << " corner(s) above tolerance |\n"
        << "| contour error | max " << fixed_text(m.max_contour_error, 4) << " mm |\n"
        << "| feed | max path speed " << fixed_text(m.max_path_speed, 1) << " mm/s |\n"
@@ -86,7 +79,9 @@ void kinematics_table(std::ostream& md, const PlanRun& run) {
     const MachineLimits planned = planned_limits(run.parameters);
     const auto limit = [](double value) { return value > 0.0 ? fixed_text(value, 1) : std::string("-"); };
     md << "Measured on the servo samples (finite differences, what a drive computes) against the axis limits "
-          "and what the plan may use of them (the rest is the rate reserve for override ramps).\n\n"
+          "and what the plan may use of them at 100 % "
+       << (run.parameters.fixed_chain ? "(the rest is the rate reserve for the override's clock ramps).\n\n"
+                                      : "(all of them: the override is planned like any other speed).\n\n")
        << "| axis | max velocity | limit | max acceleration | planned limit | limit | max jerk | planned limit | limit |\n"
        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (int a = 0; a < run.machine.limits.axes; ++a) {
@@ -106,15 +101,21 @@ void corner_table(std::ostream& md, const PlanRun& run) {
         md << "No corners.\n";
         return;
     }
+    const bool chain = run.parameters.fixed_chain;
     md << "The error is the closest approach of the sampled path (straight between samples) to the programmed "
           "corner point, measured by `component/analysis` from the samples alone; *predicted* is the planner's "
-          "bound.\n\n| # | line | turn (deg) | Tk (ms) | tolerance (mm) | predicted (mm) | measured (mm) |\n"
-          "|---:|---:|---:|---:|---:|---:|---:|\n";
+          "check. "
+       << (chain ? "Tk is the overlap of the two blocks' pulses (Eq. 11)."
+                 : "The speeds are the command's before and after the junction; *bound* is what limited them.")
+       << "\n\n| # | line | turn (deg) | " << (chain ? "Tk (ms)" : "speed in / out (mm/s) | bound")
+       << " | tolerance (mm) | predicted (mm) | measured (mm) |\n|---:|---:|---:|" << (chain ? "---:" : "---:|---")
+       << "|---:|---:|---:|\n";
     for (std::size_t i = 0; i < corners.size() && i < max_corner_rows; ++i) {
         const CornerReport& c = corners[i];
-        md << "| " << i + 1 << " | " << c.line << " | " << fixed_text(c.beta * 180.0 / std::numbers::pi, 1) << " | "
-           << (c.exact_stop ? std::string("stop") : ms(c.tk)) << " | "
-           << (std::isfinite(c.epsilon) ? fixed_text(c.epsilon, 4) : std::string("none")) << " | "
+        md << "| " << i + 1 << " | " << c.line << " | " << fixed_text(c.beta * 180.0 / std::numbers::pi, 1) << " | ";
+        if (chain) md << (c.exact_stop ? std::string("stop") : ms(c.tk));
+        else md << fixed_text(c.speed_in, 1) << " / " << fixed_text(c.speed_out, 1) << " | " << bound_text(c);
+        md << " | " << (std::isfinite(c.epsilon) ? fixed_text(c.epsilon, 4) : std::string("none")) << " | "
            << fixed_text(c.predicted_error, 4) << " | "
            << (run.corner_errors[i] ? fixed_text(*run.corner_errors[i], 4) : std::string("?")) << " |\n";
     }

@@ -1,6 +1,7 @@
 #include "summary.hpp"
 
 #include "number_text.hpp"
+#include "plan_text.hpp"
 #include <firtp/text_cat.hpp>
 
 #include <algorithm>
@@ -8,17 +9,6 @@
 
 namespace firtp::cli {
 namespace {
-
-std::string ms(double seconds) { return fixed_text(seconds * 1e3, 3); }
-
-std::string machine_line(const PlanRun& run) {
-    const FilterTimes& f = run.parameters.filters;
-    std::string times;
-    for (int i = 0; i < f.stages; ++i) times += (i ? ", " : "") + ms(f.T[static_cast<std::size_t>(i)]);
-    const bool contour = run.parameters.tolerance_meaning == ToleranceMeaning::contour;
-    return std::to_string(f.stages) + " FIR stages, T = " + times + " ms (Td " + ms(f.delay()) + " ms), period " +
-           ms(run.parameters.period) + " ms, tolerance bounds the " + (contour ? "contour" : "corner point");
-}
 
 // The largest measured corner error, and the corners above their tolerance.
 std::string corner_line(const PlanRun& run) {
@@ -56,12 +46,12 @@ void print_summary(std::ostream& out, const PlanRun& run, const std::string& pro
     for (const CornerReport& c : run.trajectory.corners) exact += c.exact_stop ? 1 : 0;
     const Measured& m = run.measured;
     out << "program      " << program_name << "\n"
-        << "machine      " << machine_line(run) << "\n"
+        << "machine      " << machine_text(run) << "\n"
         << "blocks       " << run.points.size() - 1 << " moving, " << run.trajectory.corners.size() << " corners ("
         << exact << " exact stop)\n"
-        << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (closed form "
-        << fixed_text(run.closed_form_cycle_time, 4) << " s)\n"
+        << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (" << reference_time_text(run) << ")\n"
         << "corners      " << corner_line(run) << "\n"
+        << "junctions    slowest " << slowest_junction_text(run) << "\n"
         << "contour      max error " << fixed_text(m.max_contour_error, 4) << " mm\n"
         << "speed        max path " << fixed_text(m.max_path_speed, 1) << " mm/s, axis " << axis_max(m.max_velocity, 1)
         << " mm/s\n"

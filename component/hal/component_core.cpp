@@ -10,13 +10,9 @@ namespace {
 
 ComponentSettings checked(const ComponentSettings& s) {
     if (s.axes < 1 || s.axes > max_axes) throw std::invalid_argument("axes must be 1 to 9");
-    if (s.queue < 2) throw std::invalid_argument("queue must hold at least 2 blocks");
-    if (!(s.planner.period > 0.0)) throw std::invalid_argument("the servo period must be positive");
+    if (s.planner.queue_capacity < 2) throw std::invalid_argument("queue must hold at least 2 blocks");
     if (s.max_blocks_per_period < 1) throw std::invalid_argument("max_blocks_per_period must be at least 1");
     if (!(s.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
-    if (const char* why = validate_rate(s.planner); *why) throw std::invalid_argument(why);
-    if (const char* why = validate(s.planner.filters); *why) throw std::invalid_argument(why);
-    if (const char* why = validate_window(s.planner.filters, s.planner.period); *why) throw std::invalid_argument(why);
     if (!(s.brake_speed >= 0.0 && std::isfinite(s.brake_speed)))
         throw std::invalid_argument("the brake speed must be a finite speed >= 0");
     return s;
@@ -30,23 +26,21 @@ bool next_record(BlockSource& source, stream::BlockRecord& record) {
 }
 
 ComponentCore::ComponentCore(const ComponentSettings& settings)
-    : settings_(checked(settings)), chain_(settings.planner.filters),
-      interpolator_(chain_, settings.planner.period, settings.queue, AxisVector::Zero(), rate_limits(settings.planner)),
-      planner_(settings.planner, chain_, AxisVector::Zero()), braking_(braking_peaks(chain_)) {}
+    : settings_(checked(settings)), planner_(settings.planner, AxisVector::Zero()),
+      braking_(settings.planner.fixed_chain ? braking_peaks(planner_.chain()) : BrakingPeaks{}) {}
 
 void ComponentCore::fail(ComponentError error) {
     error_ = error;
     halted_ = unchecked_halted_ = true;
     ++rejected_;
-    if (!interpolator_.idle()) {
-        interpolator_.abort();  // stop on the path; the rest of the program must not run
+    if (!planner_.idle()) {
+        planner_.abort();  // stop on the path; the rest of the program must not run
         aborting_ = true;
     }
 }
 
 void ComponentCore::drop_everything(const AxisVector& at) {
-    interpolator_.reset(at);
-    planner_.reset(at, interpolator_.now_tick());
+    planner_.reset(at);
     aborting_ = false;
     halted_ = unchecked_halted_ = true;  // the interrupted program must not continue from here
 }
@@ -61,11 +55,12 @@ AxisVector ComponentCore::feedback(const AxisVector& pins, const AxisVector& oth
 void ComponentCore::take_over(const ComponentInputs& in) {
     const AxisVector at = feedback(in.position_feedback, last_.position);
     const AxisVector velocity = feedback(in.velocity_feedback, AxisVector::Zero());
-    interpolator_.reset(at);
-    planner_.reset(at, interpolator_.now_tick());
+    planner_.reset(at);
     unchecked_halted_ = false;  // enable rose: the operator's reset for blocks with seq 0
     if (velocity.cwiseAbs().maxCoeff() > settings_.brake_speed) {
-        interpolator_.brake_from(at, velocity * braking_share(braking_, settings_.planner.limits, velocity));
+        // Limit-driven: the stop's kernel is sized to the velocity, so only max_velocity bounds
+        // it (braking_ is zero); the paper's chain can stop only a share of it.
+        planner_.brake_from(at, velocity * braking_share(braking_, settings_.planner.limits, velocity));
         braking_now_ = true;
         error_ = ComponentError::stopped_from_feedback;
         halted_ = unchecked_halted_ = true;  // whatever moved the axes must not go on here
@@ -75,7 +70,7 @@ void ComponentCore::take_over(const ComponentInputs& in) {
 bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) {
     const bool new_program = record.seq != 0 && record.program != program_;
     if (new_program) {
-        if (!interpolator_.idle() || aborting_) {
+        if (!planner_.idle() || aborting_) {
             fail(ComponentError::sequence_gap);  // a new program while one is still running
             return false;
         }
@@ -104,7 +99,7 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     Block block = record.block;
     if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
         block.tolerance = settings_.default_tolerance;
-    if (planner_.add(block, interpolator_) != Result::ok) {  // the caller made room: only bad values
+    if (planner_.add(block) != Result::ok) {  // the caller made room: only bad values
         fail(ComponentError::bad_value);
         return false;
     }
@@ -136,14 +131,14 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
     } else {
         if (!enabled_) take_over(in);
         enabled_ = true;
-        if (in.abort && !aborting_ && !braking_now_ && !interpolator_.idle()) {
-            interpolator_.abort();
+        if (in.abort && !aborting_ && !braking_now_ && !planner_.idle()) {
+            planner_.abort();
             aborting_ = true;
         }
         const bool stopping = in.hold || in.abort || aborting_;
-        interpolator_.set_rate(braking_now_ ? 1.0
-                               : stopping   ? 0.0
-                                            : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
+        planner_.set_rate(braking_now_ ? 1.0
+                          : stopping   ? 0.0
+                                       : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
 
         if (in.abort || aborting_ || braking_now_) {  // refuse the rest of a stopped program
             refuse_inputs(in, source);
@@ -151,7 +146,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
         } else {
             if (!in.strobe) {
                 ack_ = false;
-            } else if (!ack_ && interpolator_.free() > 0) {  // a full queue makes the feeder wait
+            } else if (!ack_ && planner_.free() > 0) {  // a full queue makes the feeder wait
                 stream::BlockRecord pin = in.pin_block;
                 pin.type_known = in.pin_motion_type == 1 || in.pin_motion_type == 2;
                 pin.block.type = in.pin_motion_type == 1 ? MotionType::traverse : MotionType::feed;
@@ -162,21 +157,15 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             const bool budgeted = settings_.plan_budget_ns > 0 && settings_.clock_ns != nullptr;
             const std::int64_t begin = budgeted ? settings_.clock_ns() : 0;
             stream::BlockRecord record;
-            for (int k = 0; k < settings_.max_blocks_per_period && interpolator_.free() > 0 &&
+            for (int k = 0; k < settings_.max_blocks_per_period && planner_.free() > 0 &&
                             (k == 0 || !budgeted || settings_.clock_ns() - begin < settings_.plan_budget_ns) &&
                             next_record(source, record);
                  ++k)
                 accept(record, true);
         }
-        interpolator_.tick(last_);
-        if (interpolator_.take_flushed()) {
-            planner_.reset(interpolator_.rest_position(), interpolator_.now_tick());
-            aborting_ = false;
-        }
-        if (braking_now_ && interpolator_.idle()) {  // at rest: plan from there
-            planner_.reset(interpolator_.rest_position(), interpolator_.now_tick());
-            braking_now_ = false;
-        }
+        planner_.tick(last_);
+        if (planner_.take_flushed()) aborting_ = false;  // at rest: the planner starts there
+        if (braking_now_ && planner_.idle()) braking_now_ = false;
     }
     if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset
     abort_pin_ = in.abort;
@@ -184,13 +173,13 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
 
     out.state = last_;
     out.ack = ack_;
-    out.busy = !interpolator_.idle();
-    out.done = interpolator_.idle();
-    out.queue_depth = static_cast<std::int32_t>(interpolator_.depth());
-    out.queue_free = static_cast<std::int32_t>(interpolator_.free());
+    out.busy = !planner_.idle();
+    out.done = planner_.idle();
+    out.queue_depth = static_cast<std::int32_t>(planner_.depth());
+    out.queue_free = static_cast<std::int32_t>(planner_.free());
     out.mode = !enabled_                   ? ComponentState::disabled
                : aborting_ || braking_now_ ? ComponentState::aborting
-               : !interpolator_.idle()     ? (in.hold ? ComponentState::holding : ComponentState::moving)
+               : !planner_.idle()          ? (in.hold ? ComponentState::holding : ComponentState::moving)
                : halted_ && error_ != ComponentError::none && error_ != ComponentError::repeated
                                            ? ComponentState::error
                                            : ComponentState::idle;

@@ -2,10 +2,10 @@
 //
 // Principle of operation: blocks arrive through the block pins (a strobe/ack handshake, one per
 // period) or the block stream (many per period, from the LCM bridge). Each accepted block is
-// checked (values, type, program and sequence number) and planned at once: the planner fixes
-// when its velocity pulse starts (overlap Tk from its tolerance) and queues it. Every period the
-// interpolator evaluates the FIR chain for the queued blocks and drives the axis outputs.
-// Feed scale and hold scale the chain's clock; abort stops on the path and drops the queue;
+// checked (values, type, program and sequence number) and handed to the planner (planner.hpp),
+// which plans its motion within the machine's limits and its corners within their tolerance.
+// Every period the planner's timeline drives the axis outputs. Feed scale and hold are the
+// planner's rate (0: stop on the path); abort stops on the path and drops the queue;
 // disable drops everything at once (drives are off) and the outputs follow the position feedback,
 // so that enabling moves nothing. At the first period and when enable rises the component takes
 // over from the feedback: at rest there, or, if the axes move faster than brake_speed (a restart
@@ -15,7 +15,6 @@
 #pragma once
 
 #include <firtp/braking.hpp>
-#include <firtp/interpolator.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/types.hpp>
@@ -34,9 +33,8 @@ enum class ComponentError : std::int32_t {
 };
 
 struct ComponentSettings {
-    PlannerParameters planner;
+    PlannerParameters planner;           // planner.queue_capacity: blocks it holds at once
     int axes = 3;
-    std::size_t queue = 1024;            // blocks the interpolator holds
     int max_blocks_per_period = 32;      // stream records planned per period at most
     std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
@@ -79,7 +77,7 @@ struct BlockSource {
 class ComponentCore {
 public:
     explicit ComponentCore(const ComponentSettings& settings);  // throws std::invalid_argument (init only)
-    ComponentCore(const ComponentCore&) = delete;  // the interpolator and planner point at chain_
+    ComponentCore(const ComponentCore&) = delete;
     ComponentCore& operator=(const ComponentCore&) = delete;
 
     // One servo period; real-time: no allocation, locks, I/O or exceptions.
@@ -98,10 +96,8 @@ private:
     AxisVector feedback(const AxisVector& pins, const AxisVector& otherwise) const;
 
     ComponentSettings settings_;
-    FirChain chain_;
-    Interpolator interpolator_;
     Planner planner_;
-    BrakingPeaks braking_;
+    BrakingPeaks braking_;                // the paper's mode: how much of a velocity its chain can stop
     AxisState last_{};
     bool started_ = false;
     bool enabled_ = false;

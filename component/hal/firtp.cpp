@@ -14,8 +14,9 @@
 // follow firtp.axis.N.pos-fb; when it rises, and at the first period, the component starts from
 // the feedback, and brakes within the limits from firtp.axis.N.vel-fb if the axes move (a restart
 // while moving). Connect the feedback as LinuxCNC's joint.N.motor-pos-fb; in a simulation, net
-// pos-cmd to pos-fb. Filter times not given come from nothing: give t1 (and t2 for two stages, ...)
-// in seconds.
+// pos-cmd to pos-fb. Without t1 every move is smoothed at the limits max_acceleration (needed for
+// every axis) and max_jerk; with t1 (and t2.. for more stages) the paper's fixed chain smooths
+// every block instead.
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
@@ -43,9 +44,9 @@ MODULE_LICENSE("GPL");
 static int axes = 3;
 RTAPI_MP_INT(axes, "number of axes, 1..9 (X Y Z A B C U V W)");
 static int stages = 2;
-RTAPI_MP_INT(stages, "FIR stages, 1..4");
+RTAPI_MP_INT(stages, "FIR stages of the fixed chain (with t1), 1..4");
 static char* t1 = nullptr;
-RTAPI_MP_STRING(t1, "T1 in seconds (Eq. 1-2), the longest stage");
+RTAPI_MP_STRING(t1, "T1 in seconds (Eq. 1-2), the longest stage: the paper's fixed chain; unset: smoothing at the limits");
 static char* t2 = nullptr;
 RTAPI_MP_STRING(t2, "T2 in seconds");
 static char* t3 = nullptr;
@@ -77,7 +78,7 @@ RTAPI_MP_LONG(state_key, "hal_stream key of the axis-state stream (0: none)");
 static char* max_feed_override = nullptr;
 RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_OVERRIDE); limits hold up to it (1)");
 static char* rate_reserve = nullptr;
-RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk limits kept for override and hold ramps (0.2)");
+RTAPI_MP_STRING(rate_reserve, "fixed chain: share of acceleration and jerk limits kept for override and hold ramps (0.2)");
 static int stream_depth = 4096;
 RTAPI_MP_INT(stream_depth, "records each stream holds");
 static char* brake_speed = nullptr;
@@ -277,31 +278,38 @@ int make_pins() {
 
 firtp::ComponentSettings settings_from_parameters() {
     firtp::ComponentSettings s;
-    const std::string stages_text = std::to_string(stages);
-    if (stages < 1 || stages > firtp::max_stages) refuse("stages", stages_text.c_str(), "must be 1 to 4");
-    s.planner.filters.stages = stages;
-    const char* names[] = {"t1", "t2", "t3", "t4"};
-    const char* times[] = {t1, t2, t3, t4};
-    for (int i = 0; i < firtp::max_stages; ++i) {
-        s.planner.filters.T[i] = number(names[i], times[i], 0.0);
-        if (i < stages && !(s.planner.filters.T[i] > 0.0))
-            refuse(names[i], times[i], "stages=" + stages_text + " needs a positive time in seconds");
-    }
-    if (const char* why = firtp::validate(s.planner.filters); *why) refuse("t1..t4", "", why);
     const std::string period_text = std::to_string(period_ns);
     if (period_ns <= 0) refuse("period_ns", period_text.c_str(), "must be positive");
     s.planner.period = static_cast<double>(period_ns) * 1e-9;
-    if (const char* why = firtp::validate_window(s.planner.filters, s.planner.period); *why)
-        refuse("t1..t4 and period_ns", period_text.c_str(), why);
+    s.planner.fixed_chain = t1 != nullptr && *t1 != '\0';
+    if (s.planner.fixed_chain) {
+        const std::string stages_text = std::to_string(stages);
+        if (stages < 1 || stages > firtp::max_stages) refuse("stages", stages_text.c_str(), "must be 1 to 4");
+        s.planner.filters.stages = stages;
+        const char* names[] = {"t1", "t2", "t3", "t4"};
+        const char* times[] = {t1, t2, t3, t4};
+        for (int i = 0; i < firtp::max_stages; ++i) {
+            s.planner.filters.T[i] = number(names[i], times[i], 0.0);
+            if (i < stages && !(s.planner.filters.T[i] > 0.0))
+                refuse(names[i], times[i], "stages=" + stages_text + " needs a positive time in seconds");
+        }
+        if (const char* why = firtp::validate(s.planner.filters); *why) refuse("t1..t4", "", why);
+        if (const char* why = firtp::validate_window(s.planner.filters, s.planner.period); *why)
+            refuse("t1..t4 and period_ns", period_text.c_str(), why);
+    }
     s.planner.tolerance_meaning = meaning && std::strcmp(meaning, "contour") == 0 ? firtp::ToleranceMeaning::contour
                                                                                  : firtp::ToleranceMeaning::corner_point;
     s.planner.limits.axes = axes;
     read_limits("max_velocity", max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
     read_limits("max_acceleration", max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
     read_limits("max_jerk", max_jerk, &firtp::AxisLimits::max_jerk, s.planner.limits);
+    if (!s.planner.fixed_chain)
+        for (int a = 0; a < axes; ++a)
+            if (!(s.planner.limits.axis[a].max_acceleration > 0.0))
+                refuse("max_acceleration", max_acceleration, "needs a limit for every axis (or give t1: the fixed chain)");
     s.axes = axes;
     if (queue < 2) refuse("queue", std::to_string(queue).c_str(), "must be at least 2");
-    s.queue = static_cast<std::size_t>(queue);
+    s.planner.queue_capacity = static_cast<std::size_t>(queue);
     if (max_blocks < 1) refuse("max_blocks", std::to_string(max_blocks).c_str(), "must be at least 1");
     s.max_blocks_per_period = max_blocks;
     if (plan_budget_us < 0) refuse("plan_budget_us", std::to_string(plan_budget_us).c_str(), "must be 0 (none) or positive");

@@ -1,10 +1,7 @@
 #include "tp_core.hpp"
 
-#include <firtp/fir_chain.hpp>
-#include <firtp/interpolator.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/planner.hpp>
-#include <firtp/time_scale.hpp>
 #include <firtp/types.hpp>
 
 #include <algorithm>
@@ -145,12 +142,10 @@ struct TpCore::Impl {
     double velocity_limit = 0.0;
     double max_rate = 1.0;       // highest feed override asked for (emcmotConfig->maxFeedScale)
     double built_rate = 1.0;     // the one the planner holds the limits for
-    FilterTimes wanted{};        // filters from the settings and the limits now
-    AddStatus wanted_status = AddStatus::no_filters;  // ok when they can be built
+    PlannerParameters wanted{};  // the planner the settings and the limits ask for now
+    AddStatus wanted_status = AddStatus::no_filters;  // ok when it can be built
     bool dirty = true;           // the planner differs from what the settings and limits ask
 
-    FirChain chain{};
-    std::optional<Interpolator> interp;
     std::optional<Planner> planner;
     AxisState state{};
     Pose pose{};                 // state.position
@@ -186,38 +181,12 @@ struct TpCore::Impl {
     Move& move(std::int64_t seq) { return moves[static_cast<std::size_t>(seq) % moves.size()]; }
     const Move& move(std::int64_t seq) const { return moves[static_cast<std::size_t>(seq) % moves.size()]; }
     std::int64_t depth() const { return next_seq - 1 - finished_seq; }
-    bool built() const { return interp.has_value(); }
+    bool built() const { return planner.has_value(); }
 
-    // Filter times from the settings, T1 = max v/a and T2 = max a/j where not given.
+    // The planner the settings and the limits ask for: the fixed chain when t1 is given (T2.. as
+    // given, else from the limits), else smoothing at the limits.
     void update_wanted() {
-        FilterTimes f;
-        f.stages = s.stages;
-        for (int i = 0; i < std::clamp(s.stages, 0, max_stages); ++i) {
-            double t = s.filter_times[static_cast<std::size_t>(i)];
-            if (t <= 0.0 && i < 2) {
-                double worst = 0.0;
-                for (std::size_t a = 0; a < vel_limits.size(); ++a) {
-                    const double v = vel_limits[a], acc = acc_limits[a];
-                    if (i == 0 && v > 0.0 && acc > 0.0) worst = std::max(worst, v / acc);
-                    if (i == 1 && acc > 0.0 && s.jerk > 0.0) worst = std::max(worst, acc / s.jerk);
-                }
-                t = worst;
-            }
-            f.T[static_cast<std::size_t>(i)] = t;
-        }
-        std::sort(f.T.begin(), f.T.begin() + std::clamp(f.stages, 0, max_stages), [](double a, double b) { return a > b; });
-        wanted = f;
-        // validate_window: a longer window would make the rebuild allocate accordingly (gigabytes
-        // for a jerk limit of 1) in the servo thread; refused, counted once per change.
-        wanted_status = *validate(f) != '\0'                  ? AddStatus::no_filters
-                        : *validate_window(f, period) != '\0' ? AddStatus::window_too_long
-                                                              : AddStatus::ok;
-        if (wanted_status == AddStatus::window_too_long) ++stats.refused_windows;
-    }
-
-    PlannerParameters parameters() const {
         PlannerParameters p;
-        p.filters = wanted;
         p.period = period;
         p.tolerance_meaning = s.contour_tolerance ? ToleranceMeaning::contour : ToleranceMeaning::corner_point;
         p.queue_capacity = s.blocks;
@@ -230,19 +199,32 @@ struct TpCore::Impl {
             l.max_acceleration = std::max(acc_limits[a], 0.0);
             l.max_jerk = std::max(s.jerk, 0.0);
         }
-        return p;
+        p.fixed_chain = s.filter_times[0] > 0.0;
+        if (p.fixed_chain) {
+            const std::array<double, max_stages> times = limit_filter_times(p.limits, s.filter_times);
+            p.filters.stages = s.stages;
+            for (int i = 0; i < std::clamp(s.stages, 0, max_stages); ++i) p.filters.T[static_cast<std::size_t>(i)] = times[static_cast<std::size_t>(i)];
+            std::sort(p.filters.T.begin(), p.filters.T.begin() + std::clamp(s.stages, 0, max_stages), std::greater<>());
+        }
+        wanted = p;
+        // validate_window: a longer window would make the rebuild allocate accordingly (gigabytes
+        // for a jerk limit of 1) in the servo thread; refused, counted once per change.
+        bool any_acceleration = false;
+        for (double acc : acc_limits) any_acceleration = any_acceleration || acc > 0.0;
+        wanted_status = p.fixed_chain ? (*validate(p.filters) != '\0'                  ? AddStatus::no_filters
+                                         : *validate_window(p.filters, period) != '\0' ? AddStatus::window_too_long
+                                                                                         : AddStatus::ok)
+                                      : any_acceleration ? AddStatus::ok : AddStatus::no_filters;
+        if (wanted_status == AddStatus::window_too_long) ++stats.refused_windows;
     }
 
-    // Only while nothing moves: the planner and the interpolator start again at rest.
+    // Only while nothing moves: the planner starts again at rest.
     void rebuild() {
         if (wanted_status != AddStatus::ok) return;  // the planner built before (if any) is kept
         const AxisVector at = state.position;
         planner.reset();
-        interp.reset();
-        chain = FirChain(wanted);
-        const PlannerParameters p = parameters();
-        interp.emplace(chain, period, s.blocks, at, rate_limits(p));
-        planner.emplace(p, chain, at);
+        wanted.max_rate = max_rate;  // the highest override asked for since the limits came
+        planner.emplace(wanted, at);
         built_rate = max_rate;
         pushed = 0;
         dirty = false;
@@ -268,28 +250,19 @@ struct TpCore::Impl {
         state.velocity.setZero();
         state.acceleration.setZero();
         state.jerk.setZero();
-        if (built()) {
-            interp->reset(at);
-            planner->reset(at, interp->now_tick());
-        }
+        if (built()) planner->reset(at);
         drop_moves();
     }
 
-    // Caps fixed when a move's planning starts (the filters may have been rebuilt since it came).
+    // The speed fixed when a move's planning starts: vel, within the tool-tip speed limit for
+    // moves of linear axes, and for the paper's chain within its arc feed cap. The axis limits the
+    // planner keeps itself.
     void fix_speed(Move& m) const {
         double v = m.vel;
         if (m.linear && velocity_limit > 0.0) v = std::min(v, velocity_limit);
-        if (m.acc > 0.0) v = std::min(v, m.acc * chain.filters().T[0]);  // a lone pulse's peak: F / T1
-        if (m.arc && m.inner_tolerance > 0.0) {
-            // The chain pulls a circle of radius R inwards by about v^2 sum(T_i^2) / (24 R): keep that
-            // within 90 % of the tolerance, as the G-code reader does; the rest is for the chords and
-            // the junctions (with all of it the planner has no room and the feed goes stop-and-go).
-            constexpr double shrink_share = 0.9;
-            double squares = 0.0;
-            for (int i = 0; i < chain.filters().stages; ++i) squares += chain.filters().T[i] * chain.filters().T[i];
-            const double r = std::min(m.circle.radius, m.circle.radius + m.circle.spiral);
-            if (squares > 0.0 && r > 0.0) v = std::min(v, std::sqrt(24.0 * r * shrink_share * m.inner_tolerance / squares));
-        }
+        if (m.arc && planner->fixed_chain())
+            v = std::min(v, arc_speed_limit(planner->parameters().filters,
+                                            std::min(m.circle.radius, m.circle.radius + m.circle.spiral), m.inner_tolerance));
         m.speed = v;
     }
 
@@ -325,28 +298,28 @@ struct TpCore::Impl {
         if (aborting) return;
         // Rebuilt as soon as nothing moves (not only when a move waits), so the first move of a
         // program does not wait for it.
-        if ((dirty || !built()) && plan_chord == 0 && (!built() || interp->idle())) rebuild();
+        if ((dirty || !built()) && plan_chord == 0 && (!built() || planner->idle())) rebuild();
         if (plan_seq == next_seq || !built()) return;
         const bool timed = s.plan_budget_ns > 0 && s.clock_ns != nullptr;
         const std::int64_t begin = now_ns();
-        while (plan_seq < next_seq && interp->free() > 0 && stats.planned < s.max_blocks_per_cycle &&
+        while (plan_seq < next_seq && planner->free() > 0 && stats.planned < s.max_blocks_per_cycle &&
                (stats.planned == 0 || !timed || now_ns() - begin < s.plan_budget_ns)) {
             Move& m = move(plan_seq);
             if (plan_chord == 0) {
                 // A spindle that must be at speed: the tool rests before the move and it waits.
-                if (m.atspeed && (!interp->idle() || !in.spindle_at_speed)) break;
+                if (m.atspeed && (!planner->idle() || !in.spindle_at_speed)) break;
                 fix_speed(m);
             }
             Block b = chord_block(m, plan_chord);
             b.line = plan_seq;
-            const std::size_t before = interp->depth();
-            if (planner->add(b, *interp) != Result::ok) {  // checked when added: cannot happen
+            const std::uint64_t before = planner->accepted();
+            if (planner->add(b) != Result::ok) {  // checked when added: cannot happen
                 ++stats.refused_blocks;  // the program stops on the path
-                interp->abort();
+                planner->abort();
                 aborting = true;
                 break;
             }
-            pushed += interp->depth() - before;
+            pushed += planner->accepted() - before;
             ++stats.planned;
             if (++plan_chord == m.chords) {
                 m.blocks_end = pushed;
@@ -369,9 +342,9 @@ struct TpCore::Impl {
 
     void bookkeeping() {
         if (!built()) return;
-        const std::uint64_t retired = pushed - interp->depth();
+        const std::uint64_t retired = planner->finished();
         while (finished_seq + 1 < plan_seq && move(finished_seq + 1).blocks_end <= retired) ++finished_seq;
-        const std::int64_t line = interp->current_line();
+        const std::int64_t line = planner->current_line();
         if (line > started_seq) started_seq = line;
         apply_outputs(std::max(started_seq, finished_seq));
         if (depth() == 0) paused = false;  // as the stock planner: an empty queue resumes
@@ -435,7 +408,7 @@ TpCore::TpCore(const TpSettings& settings) {
     if (!(settings.period > 0.0)) throw std::invalid_argument("the period must be positive");
     if (settings.stages < 1 || settings.stages > max_stages) throw std::invalid_argument("stages must be 1 to 4");
     if (settings.moves < 2 * settings.full_margin + 2) throw std::invalid_argument("the move ring is too small for its margin");
-    if (settings.blocks < 2) throw std::invalid_argument("the interpolator must hold at least 2 blocks");
+    if (settings.blocks < 2) throw std::invalid_argument("the planner must hold at least 2 blocks");
     if (!(settings.default_tolerance > 0.0)) throw std::invalid_argument("the default tolerance must be positive");
     if (!(settings.chord_tolerance > 0.0)) throw std::invalid_argument("the chord tolerance must be positive");
     if (settings.max_blocks_per_cycle < 1) throw std::invalid_argument("at least one block a period must be planned");
@@ -567,7 +540,7 @@ void TpCore::abort() {
     Impl& I = *impl_;
     if (I.aborting) return;
     I.aborting = true;
-    if (I.built()) I.interp->abort();
+    if (I.built()) I.planner->abort();
     // Outputs latched for moves not yet added are dropped (as the stock planner's tpClearDIOs).
     while (I.event_count > 0 && I.events[(I.event_head + I.event_count - 1) % I.events.size()].seq >= I.next_seq)
         --I.event_count;
@@ -594,24 +567,21 @@ void TpCore::run_cycle(const CycleInputs& in) {
         I.max_rate = std::max(in.max_feed_scale, 1.0);
         I.dirty = true;
     }
-    I.plan(in);  // may rebuild the interpolator (and change built_rate): the rate is set after it
+    I.plan(in);  // may rebuild the planner (and change built_rate): the rate is set after it
     if (I.built()) {
         const double top = std::min(std::isfinite(in.max_feed_scale) ? std::max(in.max_feed_scale, 0.0) : 1.0,
                                     I.built_rate);
         const double scale_in = std::isfinite(in.feed_scale) ? in.feed_scale : 0.0;
-        I.interp->set_rate(I.paused || I.aborting ? 0.0 : std::clamp(scale_in, 0.0, top));
-        I.interp->tick(I.state);
+        if (!I.aborting) I.planner->set_rate(I.paused ? 0.0 : std::clamp(scale_in, 0.0, top));
+        I.planner->tick(I.state);
         I.pose = to_pose(I.state.position);
-        if (I.interp->take_flushed()) {  // an abort came to rest: drop the rest of the program
-            I.planner->reset(I.interp->rest_position(), I.interp->now_tick());
-            I.drop_moves();
-        }
+        if (I.planner->take_flushed()) I.drop_moves();  // an abort came to rest: drop the rest of the program
     } else if (I.aborting) {
         I.drop_moves();
     }
     I.bookkeeping();
     I.stats.pending = static_cast<std::size_t>(I.next_seq - I.plan_seq);
-    I.stats.blocks = I.built() ? I.interp->depth() : 0;
+    I.stats.blocks = I.built() ? I.planner->depth() : 0;
 }
 
 const Pose& TpCore::position() const { return impl_->pose; }
@@ -663,7 +633,7 @@ Pose TpCore::dtg() const {
 }
 const CycleStats& TpCore::stats() const { return impl_->stats; }
 AddStatus TpCore::filter_status() const { return impl_->wanted_status; }
-double TpCore::filter_delay() const { return impl_->wanted.delay(); }
+double TpCore::filter_delay() const { return impl_->wanted.fixed_chain ? impl_->wanted.filters.delay() : 0.0; }
 const TpSettings& TpCore::settings() const { return impl_->s; }
 
 }  // namespace firtp::linuxcnc_tp

@@ -73,8 +73,8 @@ static int max_blocks = 64;
 RTAPI_MP_INT(max_blocks, "blocks planned per period at most (64)");
 static int plan_budget_us = 250;
 RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (250; 0: max_blocks only)");
-static int arena_mb = 16;
-RTAPI_MP_INT(arena_mb, "memory reserved at load for the planner, MB (16)");
+static int arena_mb = 48;
+RTAPI_MP_INT(arena_mb, "memory reserved at load for the planner, MB (48: 4096 blocks take about 21)");
 
 namespace {
 

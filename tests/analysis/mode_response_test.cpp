@@ -121,6 +121,7 @@ TEST(ModeResponse, FirtpStopResidualFollowsTheChainsResidualVibration) {
     block[0].termination = Termination::exact_stop;
     const auto residual = [&](double t1, double t2) {
         PlannerParameters p;
+        p.fixed_chain = true;
         p.filters.stages = 2;
         p.filters.T = {t1, t2, 0.0, 0.0};
         p.period = period;

@@ -1,6 +1,9 @@
 // Cost per servo tick and per planned block. Run: build/bin/firtp_bench
 // Counters: worst_ns is the slowest single call seen (a shared machine adds noise to it).
-#include <firtp/interpolator.hpp>
+//
+// Machines: "limits" is the built-in machine (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3 per axis), every
+// move smoothed at its limits; "chain" is the paper's fixed chain (T 148, 89, 31, 11 ms, as many
+// stages as asked).
 #include <firtp/planner.hpp>
 
 #include <benchmark/benchmark.h>
@@ -12,15 +15,22 @@ using namespace firtp;
 
 namespace {
 
-FilterTimes chain_with(int stages) {
-    FilterTimes f;
-    f.stages = stages;
-    const double times[] = {0.148, 0.089, 0.031, 0.011};
-    for (int i = 0; i < stages; ++i) f.T[i] = times[i];
-    return f;
+PlannerParameters machine(bool limits, int axes, int stages) {
+    PlannerParameters p;
+    p.limits.axes = axes;
+    for (int a = 0; a < axes; ++a) p.limits.axis[a] = {300.0, 5000.0, 1e5};
+    p.queue_capacity = 256;
+    if (!limits) {
+        p.fixed_chain = true;
+        p.limits = MachineLimits{};
+        p.filters.stages = stages;
+        const double times[] = {0.148, 0.089, 0.031, 0.011};
+        for (int i = 0; i < stages; ++i) p.filters.T[i] = times[i];
+    }
+    return p;
 }
 
-// Random corners in `axes` axes, 2-40 mm, 100-300 mm/s, 0.05 mm tolerance.
+// Random corners in `axes` axes, 2-40 mm, 100-300 mm/s (or 250), 0.05 mm tolerance.
 std::vector<Block> random_blocks(int axes, std::size_t count, bool varying_feed, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), length(2.0, 40.0), feed(100.0, 300.0);
@@ -38,64 +48,83 @@ std::vector<Block> random_blocks(int axes, std::size_t count, bool varying_feed,
     return blocks;
 }
 
+// A servo tick while moving through random corners: settling what starts, then the state.
 void BM_Tick(benchmark::State& state) {
-    const int axes = static_cast<int>(state.range(0));
-    PlannerParameters parameters;
-    parameters.filters = chain_with(static_cast<int>(state.range(1)));
-    const FirChain chain(parameters.filters);
+    const bool limits = state.range(0) != 0;
+    const int axes = static_cast<int>(state.range(1));
+    const PlannerParameters parameters = machine(limits, axes, static_cast<int>(state.range(2)));
     const std::vector<Block> blocks = random_blocks(axes, 4096, false, 1);
-    Interpolator interpolator(chain, parameters.period, blocks.size(), AxisVector::Zero());
-    Planner planner(parameters, chain, AxisVector::Zero());
-    auto refill = [&] {
-        interpolator.reset(AxisVector::Zero());
-        planner.reset(AxisVector::Zero(), interpolator.now_tick());
-        for (const Block& b : blocks) planner.add(b, interpolator);
-    };
-    refill();
+    Planner planner(parameters, AxisVector::Zero());
+    std::size_t next = 0;
     AxisState out;
     double worst = 0.0;
     for (auto _ : state) {
-        if (interpolator.idle()) {
+        if (planner.depth() < 64) {  // keep the look-ahead fed, outside the timing
             state.PauseTiming();
-            refill();
+            for (int k = 0; k < 64 && planner.free() > 0; ++k) {
+                if (next == blocks.size()) {
+                    while (!planner.idle()) planner.tick(out);
+                    planner.reset(AxisVector::Zero());
+                    next = 0;
+                }
+                planner.add(blocks[next++]);
+            }
             state.ResumeTiming();
         }
         const auto begin = std::chrono::steady_clock::now();
-        interpolator.tick(out);
+        planner.tick(out);
         const auto end = std::chrono::steady_clock::now();
         worst = std::max(worst, std::chrono::duration<double, std::nano>(end - begin).count());
         benchmark::DoNotOptimize(out);
     }
     state.counters["worst_ns"] = worst;
 }
-BENCHMARK(BM_Tick)->ArgNames({"axes", "stages"})->Args({3, 2})->Args({3, 3})->Args({9, 2})->Args({9, 3})->Args({9, 4});
+BENCHMARK(BM_Tick)
+    ->ArgNames({"limits", "axes", "stages"})
+    ->Args({1, 3, 2})
+    ->Args({1, 9, 2})
+    ->Args({0, 3, 2})
+    ->Args({0, 3, 3})
+    ->Args({0, 9, 2})
+    ->Args({0, 9, 4});
 
-// Planning one block: Tk from the closed form (equal feeds) or from the corner model (feeds differ).
+// Planning one block as a stream arrives: add() with 64 blocks of look-ahead before it (the
+// servo ticks between blocks run outside the timing).
 void BM_PlanBlock(benchmark::State& state) {
-    PlannerParameters parameters;
-    parameters.filters = chain_with(static_cast<int>(state.range(0)));
-    const FirChain chain(parameters.filters);
-    const std::vector<Block> blocks = random_blocks(3, 4096, state.range(1) != 0, 2);
-    Interpolator interpolator(chain, parameters.period, blocks.size(), AxisVector::Zero());
-    Planner planner(parameters, chain, AxisVector::Zero());
+    const bool limits = state.range(0) != 0;
+    const PlannerParameters parameters = machine(limits, 3, static_cast<int>(state.range(1)));
+    const std::vector<Block> blocks = random_blocks(3, 4096, state.range(2) != 0, 2);
+    Planner planner(parameters, AxisVector::Zero());
     std::size_t next = 0;
+    AxisState out;
     double worst = 0.0;
     for (auto _ : state) {
-        if (next == blocks.size()) {
+        if (next == blocks.size() || planner.free() == 0 || planner.depth() >= 64) {
             state.PauseTiming();
-            interpolator.reset(AxisVector::Zero());
-            planner.reset(AxisVector::Zero(), interpolator.now_tick());
-            next = 0;
+            if (next == blocks.size()) {
+                planner.finish();
+                while (!planner.idle()) planner.tick(out);
+                planner.reset(AxisVector::Zero());
+                next = 0;
+            }
+            while (planner.depth() >= 64 || planner.free() == 0) planner.tick(out);
             state.ResumeTiming();
         }
         const auto begin = std::chrono::steady_clock::now();
-        benchmark::DoNotOptimize(planner.add(blocks[next++], interpolator));
+        benchmark::DoNotOptimize(planner.add(blocks[next++]));
         const auto end = std::chrono::steady_clock::now();
         worst = std::max(worst, std::chrono::duration<double, std::nano>(end - begin).count());
     }
     state.counters["worst_ns"] = worst;
 }
-BENCHMARK(BM_PlanBlock)->ArgNames({"stages", "varying_feed"})->Args({2, 0})->Args({2, 1})->Args({3, 0})->Args({3, 1});
+BENCHMARK(BM_PlanBlock)
+    ->ArgNames({"limits", "stages", "varying_feed"})
+    ->Args({1, 2, 0})
+    ->Args({1, 2, 1})
+    ->Args({0, 2, 0})
+    ->Args({0, 2, 1})
+    ->Args({0, 3, 0})
+    ->Args({0, 3, 1});
 
 }  // namespace
 

@@ -4,7 +4,7 @@
 //                     [--max-growth-kib K]
 //   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json]
 //
-// Plans and samples block by block through Planner + Interpolator as the servo thread would
+// Plans and samples block by block through the Planner as the servo thread would
 // (plan_trajectory's loop), but keeps no samples: only running maxima. With --generate the program
 // is made on the fly, one block at a time, so memory is O(queue), not O(program):
 //   spiral  an Archimedean spiral from R 60 mm, 0.5 mm apart, in chords of 0.3-0.7 mm, F6000,
@@ -15,8 +15,9 @@
 // Machine: the built-in one (X Y Z, 300 mm/s, 5000 mm/s^2, 10^5 mm/s^3, 1 ms, T 60/50 ms) or --ini.
 //
 // Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
-// this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the
-// closed form sum(Tv) + sum(Td - Tk) + Td (as firtp plan), the largest path speed, axis velocity,
+// this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the time
+// at the programmed feeds sum(L / F) (the paper's fixed chain: the closed form sum(Tv) + sum(Td - Tk)
+// + Td, as firtp plan), the largest path speed, axis velocity,
 // acceleration and jerk at the samples, and peak RSS (VmHWM, bench_stats.hpp) after the first tenth of
 // the blocks and at the end. Exit status 1 when the output does not rest exactly on the last
 // command, or when the peak RSS grew by more than --max-growth-kib after the first tenth.
@@ -24,7 +25,6 @@
 
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
-#include <firtp/interpolator.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/planner.hpp>
 
@@ -181,15 +181,13 @@ int main(int argc, char** argv) try {
         return usage(argv[0]);
     }
 
-    const FirChain chain(parameters.filters);
-    Interpolator interpolator(chain, parameters.period, parameters.queue_capacity, start, rate_limits(parameters));
-    Planner planner(parameters, chain, start);
+    Planner planner(parameters, start);
 
     Histogram add_cpu(50, 5'000'000), add_wall(50, 5'000'000);  // 50 ns buckets up to 5 ms: 800 KB each
     const int axes = parameters.limits.axes;
     double max_speed = 0.0, max_v = 0.0, max_a = 0.0, max_j = 0.0;
     double tv_sum = 0.0, gaps = 0.0;
-    const double td = parameters.filters.delay();
+    const double td = parameters.fixed_chain ? parameters.filters.delay() : 0.0;
     long long planned = 0, corners = 0, ticks = 0;
     long warm_peak_kib = 0;
     const long long warm_after = blocks > 0 ? std::max<long long>(blocks / 10, 1) : 0;
@@ -199,12 +197,10 @@ int main(int argc, char** argv) try {
     const std::int64_t cpu_begin = thread_cpu_ns(), wall_begin = wall_ns();
     AxisState state;
     for (;;) {
-        while (pending && interpolator.free() > 0) {
-            CornerReport corner;
-            bool has_corner = false;
+        while (pending && planner.free() > 0) {
             const std::int64_t c0 = thread_cpu_ns();
             const std::int64_t w0 = wall_ns();
-            const Result result = planner.add(*pending, interpolator, &corner, &has_corner);
+            const Result result = planner.add(*pending);
             const std::int64_t w1 = wall_ns();
             const std::int64_t c1 = thread_cpu_ns();
             if (result == Result::queue_full) break;
@@ -220,14 +216,15 @@ int main(int argc, char** argv) try {
                 last_end = pending->target;
             }
             goal = pending->target;
-            if (has_corner) {
-                ++corners;
-                gaps += td - corner.tk;
-            }
             if (++planned == warm_after) warm_peak_kib = peak_rss_kib();
             pending = source->next();
         }
-        interpolator.tick(state);
+        if (!pending) planner.finish();
+        planner.tick(state);
+        for (CornerReport corner; planner.take_report(corner);) {
+            ++corners;
+            gaps += td - corner.tk;
+        }
         ++ticks;
         max_speed = std::max(max_speed, state.velocity.norm());
         for (int a = 0; a < axes; ++a) {
@@ -235,7 +232,7 @@ int main(int argc, char** argv) try {
             max_a = std::max(max_a, std::abs(state.acceleration[a]));
             max_j = std::max(max_j, std::abs(state.jerk[a]));
         }
-        if (!pending && interpolator.idle()) break;
+        if (!pending && planner.idle()) break;
     }
     const double cpu_s = static_cast<double>(thread_cpu_ns() - cpu_begin) * 1e-9;
     const double wall_s = static_cast<double>(wall_ns() - wall_begin) * 1e-9;
@@ -243,7 +240,7 @@ int main(int argc, char** argv) try {
     const long end_peak_kib = peak_rss_kib();
     if (warm_peak_kib == 0) warm_peak_kib = end_peak_kib;
     const double cycle_time = state.time;
-    const double closed_form = tv_sum + gaps + td;
+    const double closed_form = parameters.fixed_chain ? tv_sum + gaps + td : tv_sum;
     // What plan_trajectory would have held: every sample.
     const double samples_mib = static_cast<double>(ticks) * static_cast<double>(sizeof(AxisState)) / (1024.0 * 1024.0);
     const bool flat = max_growth_kib < 0 || end_peak_kib - warm_peak_kib <= max_growth_kib;
@@ -270,7 +267,8 @@ int main(int argc, char** argv) try {
         std::printf("  planner.add, wall clock:       mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us (maxima include preemption)\n",
                     add_wall.mean() * 1e-3, static_cast<double>(add_wall.quantile(0.5)) * 1e-3,
                     static_cast<double>(add_wall.quantile(0.99)) * 1e-3, static_cast<double>(add_wall.max()) * 1e-3);
-        std::printf("  cycle time %.4f s (closed form %.4f s)\n", cycle_time, closed_form);
+        std::printf("  cycle time %.4f s (%s %.4f s)\n", cycle_time, parameters.fixed_chain ? "closed form" : "at the feeds",
+                    closed_form);
         std::printf("  max path speed %.1f, axis v %.1f, a %.0f, j %.0f\n", max_speed, max_v, max_a, max_j);
         std::printf("  peak RSS %ld KiB after the first tenth, %ld KiB at the end (keeping the samples: %.0f MiB more)\n",
                     warm_peak_kib, end_peak_kib, samples_mib);

@@ -1,8 +1,11 @@
-// The servo tick's worst case over a long run: Interpolator::tick timed one call at a time.
+// The servo tick's worst case over a long run: Planner::tick timed one call at a time.
 //
-//   firtp_worst_tick [--axes 3] [--stages 2] [--ticks 10000000] [--seed 1] [--json]
+//   firtp_worst_tick [--axes 3] [--chain --stages 2] [--ticks 10000000] [--seed 1] [--json]
 //
-// Random moves keep the interpolator busy for the whole run: 0.05-40 mm (log-uniform, so short
+// Machine: every axis 300 mm/s, 5000 mm/s^2, 1e5 mm/s^3, moves smoothed at the limits; with
+// --chain the paper's fixed chain of --stages stages (T 148, 89, 31, 11 ms), no limits.
+//
+// Random moves keep the planner busy for the whole run: 0.05-40 mm (log-uniform, so short
 // blocks overlap in the filter window), 50-300 mm/s, 0.01-0.1 mm tolerances, every 50th an exact
 // stop. Blocks are planned between ticks (not timed). Each tick is timed with this thread's CPU
 // clock and the wall clock; the wall clock's maxima include preemption by other jobs on a shared
@@ -11,7 +14,6 @@
 // exactly (bit for bit) on the last command; exit status 1 otherwise.
 #include "bench_stats.hpp"
 
-#include <firtp/interpolator.hpp>
 #include <firtp/planner.hpp>
 
 #include <cmath>
@@ -73,16 +75,17 @@ int main(int argc, char** argv) {
     int axes = 3, stages = 2;
     long long ticks = 10'000'000;
     std::uint64_t seed = 1;
-    bool json = false;
+    bool json = false, chain = false;
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--json")) json = true;
+        else if (!std::strcmp(argv[i], "--chain")) chain = true;
         else if (!std::strcmp(argv[i], "--axes") && has_value) axes = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--stages") && has_value) stages = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--ticks") && has_value) ticks = std::atoll(argv[++i]);
         else if (!std::strcmp(argv[i], "--seed") && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: %s [--axes 1-9] [--stages 1-4] [--ticks N] [--seed S] [--json]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--axes 1-9] [--chain --stages 1-4] [--ticks N] [--seed S] [--json]\n", argv[0]);
             return 2;
         }
     }
@@ -92,10 +95,15 @@ int main(int argc, char** argv) {
     }
 
     PlannerParameters parameters;
-    parameters.filters = chain_with(stages);
-    const FirChain chain(parameters.filters);
-    Interpolator interpolator(chain, parameters.period, 64, AxisVector::Zero());
-    Planner planner(parameters, chain, AxisVector::Zero());
+    parameters.queue_capacity = 64;
+    if (chain) {
+        parameters.fixed_chain = true;
+        parameters.filters = chain_with(stages);
+    } else {
+        parameters.limits.axes = axes;
+        for (int a = 0; a < axes; ++a) parameters.limits.axis[a] = {300.0, 5000.0, 1e5};
+    }
+    Planner planner(parameters, AxisVector::Zero());
     RandomMoves moves(axes, seed);
 
     // The timers alone, on an empty body.
@@ -116,26 +124,27 @@ int main(int argc, char** argv) {
     const std::int64_t begin = wall_ns();
     for (long long k = 0; k < ticks; ++k) {
         // Keep the queue fed: up to 4 blocks a period (short blocks can take less than a period).
-        for (int i = 0; i < 4 && interpolator.free() > 0; ++i) {
+        for (int i = 0; i < 4 && planner.free() > 0 && planner.depth() < 32; ++i) {
             const Block b = moves.next();
-            if (planner.add(b, interpolator) != Result::ok) {
+            if (planner.add(b) != Result::ok) {
                 std::fprintf(stderr, "block %lld refused\n", static_cast<long long>(b.line));
                 return 1;
             }
             last_target = b.target;
         }
-        moving_ticks += interpolator.idle() ? 0 : 1;
+        moving_ticks += planner.idle() ? 0 : 1;
         const std::int64_t c0 = thread_cpu_ns();
         const std::int64_t w0 = wall_ns();
-        interpolator.tick(out);
+        planner.tick(out);
         const std::int64_t w1 = wall_ns();
         const std::int64_t c1 = thread_cpu_ns();
         wall.add(w1 - w0);
         cpu.add(c1 - c0);
     }
     const double seconds = static_cast<double>(wall_ns() - begin) * 1e-9;
-    while (!interpolator.idle()) interpolator.tick(out);
-    interpolator.tick(out);
+    planner.finish();
+    while (!planner.idle()) planner.tick(out);
+    planner.tick(out);
     const bool exact = out.position == last_target && out.velocity == AxisVector::Zero();
 
     if (json) {

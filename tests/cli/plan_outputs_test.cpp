@@ -173,11 +173,13 @@ TEST(PlanOutputs, PeriodAndToleranceOverrides) {
     for (const json& c : report["corners"]) EXPECT_EQ(c["epsilon_mm"], 0.02);
 }
 
-// Exact stops: Tk = 0, each stop waits for the next servo sample, the end is rounded up to one.
+// Exact stops in the paper's chain: Tk = 0, each stop waits for the next servo sample, the end is
+// rounded up to one.
 TEST(PlanOutputs, ExactStopClosedFormCycleTime) {
     TempDir dir;
     write_file(dir / "stops.ngc", "G21 G90 G61\nF3000\nG1 X10\nG1 X10 Y7.3\nG1 X0 Y0\nM2\n");
-    const Outcome r = run_firtp({"plan", (dir / "stops.ngc").string(), "--json", (dir / "out.json").string()});
+    const Outcome r = run_firtp({"plan", (dir / "stops.ngc").string(), "--t1", "0.06", "--t2", "0.05", "--json",
+                                 (dir / "out.json").string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const json report = json::parse(read_file(dir / "out.json"));
     ASSERT_EQ(report["corners"].size(), 2u);
@@ -192,6 +194,37 @@ TEST(PlanOutputs, ExactStopClosedFormCycleTime) {
     EXPECT_NEAR(closed, tv_sum + 3.0 * td, 1e-12);
     EXPECT_GE(report["cycle_time_s"].get<double>(), closed - 1e-9);
     EXPECT_LE(report["cycle_time_s"].get<double>(), closed + 3 * 0.001 + 1e-9);
+}
+
+// Exact stops smoothed at the limits: each move is a pulse whose two steps use the acceleration of
+// its most loaded axis (T1 = F max|u_a| / A) and the jerk time T2 = A / J; a move lasts at most
+// Tv + T1 + T2 and the next starts before the last one has quite stopped (their T2 stages overlap).
+TEST(PlanOutputs, ExactStopsAtTheLimits) {
+    TempDir dir;
+    write_file(dir / "stops.ngc", "G21 G90 G61\nF3000\nG1 X10\nG1 X10 Y7.3\nG1 X0 Y0\nM2\n");
+    const Outcome r = run_firtp({"plan", (dir / "stops.ngc").string(), "--json", (dir / "out.json").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json report = json::parse(read_file(dir / "out.json"));
+    EXPECT_EQ(report["machine"]["smoothing"], "limits");
+    EXPECT_TRUE(report["closed_form_cycle_time_s"].is_null());
+    ASSERT_EQ(report["corners"].size(), 2u);
+    for (const json& c : report["corners"]) {
+        EXPECT_TRUE(c["exact_stop"].get<bool>());
+        EXPECT_EQ(c["bound"], "exact stop");
+        EXPECT_EQ(c["speed_out_mm_s"], 0.0);
+        EXPECT_LT(c["measured_error_mm"].get<double>(), 1e-9);
+    }
+    const double f = 50.0, a = 5000.0, t2 = 0.05;  // the built-in machine: 5000 mm/s^2, 1e5 mm/s^3
+    const double diagonal = std::hypot(10.0, 7.3);
+    const double moves[][2] = {{10.0, 1.0}, {7.3, 1.0}, {diagonal, 10.0 / diagonal}};  // length, max |u_a|
+    double tv = 0.0, separate = 0.0;
+    for (const auto& m : moves) {
+        tv += m[0] / f;
+        separate += m[0] / f + f * m[1] / a + t2;
+    }
+    EXPECT_NEAR(report["feed_time_s"].get<double>(), tv, 1e-12);
+    EXPECT_GT(report["cycle_time_s"].get<double>(), tv);
+    EXPECT_LE(report["cycle_time_s"].get<double>(), separate + 0.001);
 }
 
 TEST(PlanOutputs, SummaryOnStdout) {

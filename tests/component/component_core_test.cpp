@@ -33,6 +33,7 @@ struct FakeStream {
 
 ComponentSettings settings() {
     ComponentSettings s;
+    s.planner.fixed_chain = true;
     s.planner.filters = test::chain_of({0.148, 0.089});
     s.planner.period = 0.001;
     return s;

@@ -1,13 +1,10 @@
-// The planner's feed search. It used to give up when a stop (Tk = 0) failed even at 0.1 % of the
-// feed, and went on at 2 %, unchecked (23 of the 3,000 random corner-point programs). The cause:
-// the quick search (every 12th sample) skipped the sample where, after a stop, the tool rests on
-// the junction; the chord past it, from the previous block's last decelerating sample, cut the
-// corner by more than a tight epsilon whatever the new block's feed. The full check passed the
-// stop at full feed all along.
+// The paper's mode's feed search. It used to give up when a stop (Tk = 0) failed even at 0.1 % of
+// the feed, and went on at 2 %, unchecked (23 of the 3,000 random corner-point programs): a
+// sampled check skipped the sample where, after a stop, the tool rests on the junction. The
+// checks are closed forms now; these cases stay.
 #include "support/reference.hpp"
 
 #include <firtp/measure.hpp>
-#include <firtp/sampled_window.hpp>
 #include <firtp/trajectory.hpp>
 
 #include <gtest/gtest.h>
@@ -26,6 +23,7 @@ constexpr double feed = 120.0, epsilon = 1e-4, short_length = 2.0;
 
 PlannerParameters one_stage() {
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.02});
     p.period = 0.001;
     return p;
@@ -44,25 +42,6 @@ std::vector<Block> stop_after_short_block() {
 
 }  // namespace
 
-// The root cause, on the sampled window itself: the quick search must judge a stop as the full
-// check does, at the block's feed and far below it.
-TEST(FeedSearch, QuickCheckOfAStopTakesTheSampleOnTheJunction) {
-    const PlannerParameters p = one_stage();
-    const FirChain chain(p.filters);
-    SampledWindow window(chain, p);
-    window.reset(AxisVector::Zero(), 0);
-    const double tv1 = 50.0 / feed;
-    window.commit({test::xyz(50, 0), tv1, 0, 0.0});
-    window.set_corner_tolerance(epsilon, true);
-    // Tk = 0: the next pulse starts Td after this one ended, on the next servo sample.
-    const auto start = static_cast<std::int64_t>(std::ceil((tv1 + chain.delay()) / p.period));
-    for (const double fraction : {1.0, 1e-3}) {
-        const Candidate stop{short_delta(), short_length / (feed * fraction), start, 0.0};
-        EXPECT_TRUE(window.feasible(stop)) << fraction;
-        EXPECT_TRUE(window.feasible(stop, 12)) << fraction;
-    }
-}
-
 // Through the planner: the stop goes at the programmed feed (it went at 2.4 mm/s, 1.29 s in all).
 TEST(FeedSearch, StopAfterAShortBlockKeepsTheFeed) {
     const PlannerParameters p = one_stage();
@@ -73,9 +52,10 @@ TEST(FeedSearch, StopAfterAShortBlockKeepsTheFeed) {
     EXPECT_EQ(plan.stats.crawling, 0u);
     ASSERT_EQ(plan.corners.size(), 1u);
     EXPECT_EQ(plan.corners[0].tk, 0.0);
-    // Two pulses and two filter delays, each start on a servo sample.
+    // Two pulses and two filter delays; the stop rests one to two periods on the corner.
     const double closed_form = (50.0 + short_length) / feed + 2 * p.filters.delay();
-    EXPECT_NEAR(plan.cycle_time, closed_form, 2 * p.period);
+    EXPECT_GE(plan.cycle_time, closed_form + p.period - 1e-9);
+    EXPECT_LE(plan.cycle_time, closed_form + 3 * p.period + 1e-9);
     const std::vector<AxisVector> points{AxisVector::Zero(), blocks[0].target, blocks[1].target};
     const Measured m = measure(plan.samples, points, p.period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
@@ -87,6 +67,7 @@ TEST(FeedSearch, StopAfterAShortBlockKeepsTheFeed) {
 // holds the limit (the search used to stop at 0.03 % and go on at 2 %: 190 times the limit).
 TEST(FeedSearch, FeedFarAboveTheVelocityLimitIsLoweredUntilTheLimitHolds) {
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.05, 0.01});
     for (int a = 0; a < 3; ++a) p.limits.axis[a] = {1.0, 100.0, 0.0};
     const std::vector<Block> blocks = {{test::xyz(10, 0), 1e4, Termination::blend, 0.01, MotionType::feed, 1},

@@ -28,6 +28,7 @@ TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters)
         p.period = 0.001;
         // Limits and filters drawn independently: often the filters are too short for the limits.
         p.limits = test::uniform_limits(100 + 300 * unit(rng), 500 + 9500 * unit(rng), 1e4 + 4e5 * unit(rng));
+        p.fixed_chain = true;
         p.filters = test::chain_of({0.01 + 0.1 * unit(rng), 0.005 + 0.04 * unit(rng)});
         if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
         std::vector<Block> blocks;
@@ -60,6 +61,7 @@ TEST(AxisLimits, HoldAtEverySampleOverRandomProgramsWithOverlapsAndShortFilters)
 
 TEST(AxisLimits, ReversalWithFullOverlapWouldDoubleTheAccelerationAndIsHeldToTheLimit) {
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.06, 0.02});
     p.limits = test::uniform_limits(300, 5000, 5e5);  // T1 = v / a: one block alone reaches a = F / T1 = 5000 at 300 mm/s
     const std::vector<Block> blocks{line_to(xyz(40, 0), 300, 5.0, 1), line_to(xyz(0, 0), 300, 5.0, 2)};
@@ -79,6 +81,7 @@ TEST(DensePaths, ChordedCircleKeepsTheFeedAndTheTolerance) {
     // R 20 mm in 0.2 mm chords (628 blocks, 125 in one 0.11 s window at 50 mm/s). The filters'
     // radial shrink F^2 (T1^2 + T2^2) / (24 R) = 0.032 mm is within the 0.05 mm tolerance.
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.06, 0.05});
     p.tolerance_meaning = ToleranceMeaning::contour;
     const double R = 20.0, feed = 50.0, tolerance = 0.05;
@@ -106,6 +109,7 @@ TEST(DensePaths, ChordedCircleKeepsTheFeedAndTheTolerance) {
 
 TEST(DensePaths, ZigZagFinishingPassHoldsEveryCorner) {
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.05, 0.02});
     std::vector<Block> blocks;
     const double tolerance = 0.01;
@@ -124,6 +128,7 @@ TEST(DensePaths, RetractAndPlungeBeforeCornersDoNotHideThem) {
     // past it (it once stayed behind and a 90 deg corner was cut by 0.52 mm at 0.02 mm tolerance).
     for (bool limited : {false, true}) {
         PlannerParameters p;
+        p.fixed_chain = true;
         p.filters = test::chain_of({0.06, 0.05});
         if (limited) p.limits = test::uniform_limits(300, 5000, 1e5);
         const double tolerance = 0.02;
@@ -168,6 +173,7 @@ TEST(DensePaths, PathsPassingBackNearThemselvesDoNotLoseTheToolOrTheFeed) {
         if (i >= skipped) blocks.push_back(line_to(at, f, tol, i + 1));
     }
     PlannerParameters p;
+    p.fixed_chain = true;
     p.filters = test::chain_of({0.06, 0.05});
     p.limits = test::uniform_limits(300, 5000, 1e5);
     const Trajectory t = plan_trajectory(p, start, blocks);

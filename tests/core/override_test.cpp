@@ -8,7 +8,6 @@
 #include "support/reference.hpp"
 #include "support/separation.hpp"
 
-#include <firtp/interpolator.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/time_scale.hpp>
@@ -35,42 +34,41 @@ struct Outcome {
 
 // Plans `blocks` and runs them, changing the rate at the given ticks.
 Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const std::vector<std::pair<int, double>>& events) {
-    const FirChain chain(p.filters);
-    Interpolator interpolator(chain, p.period, 64, AxisVector::Zero(), rate_limits(p));
-    Planner planner(p, chain, AxisVector::Zero());
+    PlannerParameters q = p;
+    q.queue_capacity = 64;
+    Planner planner(q, AxisVector::Zero());
     Outcome r;
     std::size_t next = 0, event = 0;
     int hold_tick = -1;
     for (int k = 0; k < 2000000; ++k) {
         for (; next < blocks.size(); ++next) {
-            const Result result = planner.add(blocks[next], interpolator);
+            const Result result = planner.add(blocks[next]);
             if (result == Result::queue_full) break;
             EXPECT_EQ(result, Result::ok);
             r.points.push_back(blocks[next].target);
         }
         for (; event < events.size() && events[event].first == k; ++event) {
             if (events[event].second < 0.0) {  // abort: stop on the path, then drop the rest
-                interpolator.set_rate(0.0);
-                interpolator.abort();
+                planner.abort();
                 r.aborted = true;
                 hold_tick = k;
                 continue;
             }
-            interpolator.set_rate(events[event].second);
+            planner.set_rate(events[event].second);
             if (events[event].second == 0.0 && hold_tick < 0) hold_tick = k;
             if (events[event].second > 0.0) hold_tick = -1;
         }
         AxisState s;
-        interpolator.tick(s);
+        planner.tick(s);
         r.samples.push_back(s);
-        if (hold_tick >= 0 && interpolator.time_scale().stopped()) {
+        if (hold_tick >= 0 && planner.time_scale().stopped()) {
             r.longest_stop = std::max(r.longest_stop, (k - hold_tick) * p.period);
             hold_tick = -1;
         }
-        if (r.aborted && interpolator.take_flushed()) {
+        if (r.aborted && planner.take_flushed()) {
             break;
         }
-        if (next == blocks.size() && interpolator.idle() && event == events.size()) break;
+        if (next == blocks.size() && planner.idle() && event == events.size()) break;
     }
     return r;
 }
@@ -79,6 +77,7 @@ Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const 
 
 TEST(RateLimits, FromTheAxisLimitsAndTheReserve) {
     PlannerParameters p;
+    p.fixed_chain = true;  // the paper's clock; smoothing at the limits plans the override instead
     p.limits = test::uniform_limits(300, 5000, 1e5);
     const RateLimits r = rate_limits(p);
     // r' <= min(0.2 * 5000 / 300, 0.2 * 1e5 / (6 * 4000)); r'' = (0.2 * 1e5 - 3 r' 4000) / 300
@@ -94,6 +93,8 @@ TEST(RateLimits, FromTheAxisLimitsAndTheReserve) {
     p.rate_reserve = 0.0;
     EXPECT_STREQ(validate_rate(p), "the rate reserve must lie between 0 and 1 (a share of the acceleration and jerk limits)");
     p.rate_reserve = 0.2;
+    p.fixed_chain = false;
+    EXPECT_NEAR(planned_limits(p).axis[0].max_acceleration, 5000, 1e-12);  // all of it at 100 %
     p.max_rate = 0.5;
     EXPECT_STREQ(validate_rate(p), "the highest feed override must be at least 1 (100 %)");
 }
@@ -110,6 +111,7 @@ TEST(RateLimits, OverrideHoldAndAbortAtRandomMomentsKeepLimitsToleranceAndEnd) {
     for (int k = 0; k < programs; ++k) {
         PlannerParameters p;
         p.limits = test::uniform_limits(100 + 300 * unit(rng), 1000 + 9000 * unit(rng), 2e4 + 3e5 * unit(rng));
+        p.fixed_chain = true;
         p.filters = test::chain_of({0.02 + 0.08 * unit(rng), 0.01 + 0.03 * unit(rng)});
         if (p.filters.T[1] > p.filters.T[0]) std::swap(p.filters.T[0], p.filters.T[1]);
         p.max_rate = k % 2 == 0 ? 1.0 : 1.0 + unit(rng);

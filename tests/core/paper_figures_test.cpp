@@ -28,6 +28,7 @@ struct Figure4 : ::testing::Test {
     std::vector<Block> blocks;
     AxisVector corner, end;
     void SetUp() override {
+        parameters.fixed_chain = true;
         parameters.filters = chain_of({0.020});
         parameters.period = 0.001;
         // The paper's orientation: X keeps F cos 45 while Y reverses from +F sin 45 to -F sin 45.
@@ -94,6 +95,7 @@ TEST_F(Figure4, ToleranceGivesTheOverlapOfEq13AndIsKept) {
 
 TEST(Diamond, EveryCornerWithinHalfAMillimetreAndCycleTimeOfTheClosedForm) {
     PlannerParameters parameters;
+    parameters.fixed_chain = true;
     parameters.filters = chain_of({0.148, 0.089});
     parameters.period = 0.001;
     const std::vector<Block> blocks{line_to(xyz(25, 25), 250, 0.5, 4), line_to(xyz(50, 0), 250, 0.5, 5),

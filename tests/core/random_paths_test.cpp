@@ -50,6 +50,7 @@ RandomProgram random_program(std::mt19937_64& rng, bool three_d) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
     RandomProgram p;
+    p.parameters.fixed_chain = true;
     FilterTimes& f = p.parameters.filters;
     f.stages = 1 + static_cast<int>(rng() % 4);
     for (int i = 0; i < f.stages; ++i) f.T[i] = log_uniform(0.002, 0.15);
@@ -111,8 +112,8 @@ int scaled(int count) {
 struct Counts {
     int programs = 0;
     std::size_t blocks = 0;
-    Planner::Stats stats;
-    void add(const RandomProgram& p, const Planner::Stats& s) {
+    PlannerStats stats;
+    void add(const RandomProgram& p, const PlannerStats& s) {
         ++programs;
         blocks += p.blocks.size();
         stats.slowed += s.slowed;

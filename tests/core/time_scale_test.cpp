@@ -1,8 +1,8 @@
-// Feed override, hold and abort: the tool stays on the planned path, stops within the ramp and
-// ends exactly where commanded; an abort drops the rest of the program.
+// The paper's fixed chain: feed override, hold and abort scale the chain's clock. The tool stays
+// on the planned path, stops within the ramp and ends exactly where commanded; an abort drops the
+// rest of the program.
 #include "support/reference.hpp"
 
-#include <firtp/interpolator.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/time_scale.hpp>
@@ -21,20 +21,17 @@ namespace {
 
 struct Machine {
     PlannerParameters parameters;
-    FirChain chain;
-    Interpolator interpolator;
     Planner planner;
     std::vector<AxisState> samples;
     std::vector<AxisVector> points{AxisVector::Zero()};
 
-    Machine()
-        : parameters(make_parameters()), chain(parameters.filters),
-          interpolator(chain, parameters.period, 64, AxisVector::Zero()),
-          planner(parameters, chain, AxisVector::Zero()) {}
+    Machine() : parameters(make_parameters()), planner(parameters, AxisVector::Zero()) {}
     static PlannerParameters make_parameters() {
         PlannerParameters p;
+        p.fixed_chain = true;
         p.filters = test::chain_of({0.06, 0.02});
         p.period = 0.001;
+        p.queue_capacity = 64;
         return p;
     }
     void add(const AxisVector& target, double feed = 100.0) {
@@ -43,7 +40,7 @@ struct Machine {
         b.feed = feed;
         b.tolerance = 0.05;
         b.line = static_cast<std::int64_t>(points.size());
-        ASSERT_EQ(planner.add(b, interpolator), Result::ok);
+        ASSERT_EQ(planner.add(b), Result::ok);
         points.push_back(target);
     }
     // Ticks until idle (or max), calling `each` before every tick.
@@ -51,9 +48,9 @@ struct Machine {
         for (int k = 0; k < max_ticks; ++k) {
             if (each) each(k);
             AxisState s;
-            interpolator.tick(s);
+            planner.tick(s);
             samples.push_back(s);
-            if (interpolator.idle() && k > 0) break;
+            if (planner.idle() && k > 0) break;
         }
     }
 };
@@ -68,7 +65,7 @@ TEST(TimeScale, HalfFeedFollowsTheSamePathAndEndsExactly) {
         m->add(xyz(0, 15));
     }
     full.run(100000);
-    half.interpolator.set_rate(0.5);
+    half.planner.set_rate(0.5);
     half.run(100000);
     const Measured f = measure(full.samples, full.points, 0.001), h = measure(half.samples, half.points, 0.001);
     EXPECT_EQ(h.end_position, xyz(0, 15));
@@ -85,9 +82,9 @@ TEST(TimeScale, HoldStopsOnThePathWithinTheRampAndResumes) {
     int stopped_at = -1;
     AxisVector held;
     m.run(100000, [&](int k) {
-        if (k == 150) m.interpolator.set_rate(0.0);
-        if (k == 600) m.interpolator.set_rate(1.0);
-        if (k > 150 && k < 600 && stopped_at < 0 && m.interpolator.time_scale().rate() == 0.0) stopped_at = k;
+        if (k == 150) m.planner.set_rate(0.0);
+        if (k == 600) m.planner.set_rate(1.0);
+        if (k > 150 && k < 600 && stopped_at < 0 && m.planner.time_scale().rate() == 0.0) stopped_at = k;
     });
     ASSERT_GT(stopped_at, 0);
     // Full rate to 0 within the S-curve's stop time (0.25 s without axis limits).
@@ -108,19 +105,15 @@ TEST(TimeScale, AbortStopsDropsTheRestAndPlansAfreshFromThere) {
     m.add(xyz(30, 30));
     m.add(xyz(0, 30));
     m.run(400, [&](int k) {
-        if (k == 100) {
-            m.interpolator.set_rate(0.0);
-            m.interpolator.abort();
-        }
+        if (k == 100) m.planner.abort();
     });
-    ASSERT_TRUE(m.interpolator.idle());
-    ASSERT_TRUE(m.interpolator.take_flushed());
-    const AxisVector stopped = m.interpolator.rest_position();
+    ASSERT_TRUE(m.planner.idle());
+    ASSERT_TRUE(m.planner.take_flushed());
+    const AxisVector stopped = m.planner.rest_position();
     EXPECT_GT(stopped[0], 0.0);
     EXPECT_LT(stopped[0], 30.0);
     EXPECT_NEAR(stopped[1], 0.0, 1e-12);  // on the first block's line
-    m.planner.reset(stopped, m.interpolator.now_tick());
-    m.interpolator.set_rate(1.0);
+    EXPECT_EQ(m.planner.goal(), stopped);  // it plans afresh from there
     m.samples.clear();
     m.points = {stopped};
     m.add(xyz(0, 0));
@@ -168,8 +161,8 @@ TEST(TimeScale, AfterAnOverrideOrAHoldTheSamplesComeBackOntoThePlannedGrid) {
         Machine changed;
         program(changed);
         changed.run(100000, [&](int k) {
-            if (k == change.from) changed.interpolator.set_rate(change.rate);
-            if (k == change.to) changed.interpolator.set_rate(1.0);
+            if (k == change.from) changed.planner.set_rate(change.rate);
+            if (k == change.to) changed.planner.set_rate(1.0);
         });
         ASSERT_EQ(changed.samples.back().position, plain.samples.back().position);
         // The last 1,500 samples (after the ramp and the trim): plain's, a whole number of periods later.

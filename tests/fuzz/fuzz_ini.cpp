@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     firtp::ComponentSettings s;
     s.planner = p;
     s.axes = p.limits.axes;
-    s.queue = 4;
+    s.planner.queue_capacity = 4;
     s.default_tolerance = m.default_tolerance;
     try {
         firtp::ComponentCore core(s);  // what firtp run / serve load with this INI

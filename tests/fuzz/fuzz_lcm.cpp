@@ -53,7 +53,7 @@ firtp::ComponentSettings settings() {
     s.planner.filters.T = {0.02, 0.01, 0.0, 0.0};
     s.planner.period = 0.001;
     s.planner.max_rate = 2.0;
-    s.queue = 256;  // the stream (64) always drains within two periods
+    s.planner.queue_capacity = 256;  // the stream (64) always drains within two periods
     return s;
 }
 

@@ -183,6 +183,7 @@ TEST(TpCore, DiamondOneMoveAPeriodEqualsTheOfflinePlanWithinToleranceAndLimits) 
     }
     // The same planner offline, every block available at once: the same samples.
     firtp::PlannerParameters p;
+    p.fixed_chain = true;
     p.filters.stages = 2;
     p.filters.T = {0.148, 0.089, 0.0, 0.0};
     p.limits.axes = 9;
@@ -577,30 +578,36 @@ TEST(TpCore, NoFiltersWithoutLimitsOrTimes) {
     EXPECT_EQ(tp.add_line(r), AddStatus::no_filters);
 }
 
-// Filter times from the axis limits (T1 = v/a, T2 = a/j), taken when LinuxCNC sends the limits.
-TEST(TpCore, FilterTimesFromTheLimitsSentAfterCreation) {
+// Without t1 every move is smoothed at the axis limits LinuxCNC sends after creation: a lone
+// move's steps take T1 = F / a on its axis and the jerk time T2 = a / j.
+TEST(TpCore, LimitsSentAfterCreationSmoothEachMoveAtThem) {
     TpSettings s = diamond_settings();
     s.filter_times = {0.0, 0.0, 0.0, 0.0};
     s.jerk = 100000.0;
-    Machine m(s, 300.0, 5000.0);  // T1 = 60 ms, T2 = 50 ms
+    Machine m(s, 300.0, 5000.0);
     m.line(pose(100, 0), 200, 1, term_exact);
     ASSERT_TRUE(m.run());
     EXPECT_EQ(m.tp.stats().rebuilds, 1);  // nothing to build at creation; built at the first move
+    EXPECT_EQ(m.tp.filter_delay(), 0.0);  // no fixed chain
     const auto moving = motion(m.samples);
-    // A lone pulse: accelerates for T1 + T2 and peaks at F / T1; the move lasts L / F + T1 + T2.
-    EXPECT_NEAR(static_cast<double>(moving.size() - 1) * 0.001, 100.0 / 200.0 + 0.11, 0.002);
+    // T1 = 200 / 5000 = 40 ms, T2 = 5000 / 1e5 = 50 ms: each step lasts T1 + T2 and its
+    // acceleration peaks at F / max(T1, T2) = 4000 (the jerk limit binds first); the move lasts
+    // L / F + T1 + T2.
+    EXPECT_NEAR(static_cast<double>(moving.size() - 1) * 0.001, 100.0 / 200.0 + 0.09, 0.002);
     const firtp::Measured measured =
         firtp::measure(moving, std::vector<AxisVector>{vec(pose(0, 0)), vec(pose(100, 0))}, 0.001);
-    EXPECT_NEAR(measured.max_acceleration[0], 200.0 / 0.06, 40.0);
-    EXPECT_LE(measured.max_jerk[0], 100000.0 * (1 + 1e-6) * 1.01);
+    EXPECT_NEAR(measured.max_acceleration[0], 200.0 / 0.05, 40.0);
+    EXPECT_LE(measured.max_jerk[0], 100000.0 * (1 + 1e-6));
+    EXPECT_GE(measured.max_jerk[0], 100000.0 * 0.95);
 }
 
-// Limits whose filter window exceeds 20000 periods (validate_window): the rebuild would allocate
-// for it in the servo thread (2.7 GB for a jerk of 1). Refused once, nothing allocated, the planner
-// built before kept (a move queued before still ends on it); moves refused until the limits change.
+// The paper's chain (t1 given, T2 = a / j from the limits): limits whose filter window exceeds
+// 20000 periods (validate_window) would make the rebuild allocate for it in the servo thread (2.7
+// GB for a window of hours). Refused once, nothing allocated, the planner built before kept (a
+// move queued before still ends on it); moves refused until the limits change.
 TEST(TpCore, LimitsGivingTooLongAWindowAreRefusedWithoutAllocating) {
     TpSettings s = diamond_settings();
-    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.filter_times = {0.06, 0.0, 0.0, 0.0};
     s.jerk = 100000.0;
     TpCore tp(s);
     tp.set_axis_limits(limits(300), limits(5000));  // T1 = 60 ms, T2 = 50 ms
@@ -616,10 +623,10 @@ TEST(TpCore, LimitsGivingTooLongAWindowAreRefusedWithoutAllocating) {
     ASSERT_FALSE(tp.done());
 
     const long before = firtp::test::allocation_count();
-    tp.set_axis_limits(limits(300), limits(12));  // T1 = 300 / 12 = 25 s: 25000 periods
-    tp.set_axis_limits(limits(300), limits(12));  // the same again: not counted again
+    tp.set_axis_limits(limits(300), limits(2.5e9));  // T2 = 2.5e9 / 1e5 = 25000 s
+    tp.set_axis_limits(limits(300), limits(2.5e9));  // the same again: not counted again
     EXPECT_EQ(tp.filter_status(), AddStatus::window_too_long);
-    EXPECT_NEAR(tp.filter_delay(), 25.0 + 12.0 / 100000.0, 1e-12);
+    EXPECT_NEAR(tp.filter_delay(), 25000.0 + 0.06, 1e-9);
     EXPECT_EQ(tp.stats().refused_windows, 1);
     EXPECT_STREQ(describe(AddStatus::window_too_long),
                  "the filter delay T1 + ... + Tn is longer than 20000 servo periods: lower T1 (t1, else "
@@ -643,18 +650,20 @@ TEST(TpCore, LimitsGivingTooLongAWindowAreRefusedWithoutAllocating) {
     EXPECT_EQ(tp.stats().rebuilds, 2);
     EXPECT_EQ(tp.stats().refused_windows, 1);
 
-    // A shorter period makes the same window longer in periods: T1 = 2.5 s is 25000 periods at 0.1 ms.
-    tp.set_axis_limits(limits(300), limits(120));
+    // A shorter period makes the same window longer in periods: T2 = 2.5 s is 25000 periods at 0.1 ms.
+    tp.set_axis_limits(limits(300), limits(2.5e5));
     EXPECT_EQ(tp.filter_status(), AddStatus::ok);
     ASSERT_TRUE(tp.set_period(0.0001));
     EXPECT_EQ(tp.filter_status(), AddStatus::window_too_long);
     EXPECT_EQ(tp.stats().refused_windows, 2);
 }
 
-// A jerk of 1 (T2 = a / j = 5000 s, 5 million periods): nothing is ever built, moves are refused.
+// The paper's chain with a jerk of 1 (T2 = a / j = 5000 s, 5 million periods): nothing is ever
+// built, moves are refused. Smoothing at the limits has no window: the same jerk only makes the
+// moves slow.
 TEST(TpCore, JerkOfOneIsRefusedBeforeAnyPlannerIsBuilt) {
     TpSettings s = diamond_settings();
-    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.filter_times = {0.06, 0.0, 0.0, 0.0};
     s.jerk = 1.0;
     TpCore tp(s);
     const long before = firtp::test::allocation_count();
@@ -669,6 +678,12 @@ TEST(TpCore, JerkOfOneIsRefusedBeforeAnyPlannerIsBuilt) {
     EXPECT_EQ(tp.stats().rebuilds, 0);
     EXPECT_TRUE(tp.done());
     EXPECT_EQ(firtp::test::allocation_count() - before, 0);
+
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    TpCore at_limits(s);
+    at_limits.set_axis_limits(limits(300), limits(5000));
+    EXPECT_EQ(at_limits.filter_status(), AddStatus::ok);
+    EXPECT_EQ(at_limits.add_line(r), AddStatus::ok);
 }
 
 TEST(TpCore, QueueFullBeforeTheRingIs) {

@@ -19,16 +19,16 @@ using firtp::test::load_error;
 
 // A jerk limit of 1 gives T2 = a / j = 5000 s: before, this INI loaded and building its planner
 // tried to allocate a 5-million-sample window (found by tests/fuzz/fuzz_ini as an out-of-memory).
+// The fixed chain's window ([FIRTP]T1 given, the rest derived from the limits).
 TEST(MachineRefusals, FilterWindowTooLongNamesTheLimitThatMakesIt) {
-    EXPECT_EQ(load_error("[AXIS_X]\nMAX_VELOCITY = 300\nMAX_JERK = 1\n"),
+    EXPECT_EQ(load_error("[AXIS_X]\nMAX_VELOCITY = 300\nMAX_JERK = 1\n[FIRTP]\nT1 = 0.06\n"),
               "mill.ini:3: [AXIS_X]MAX_JERK: the filter delay T1 + ... + Tn = 5000.06 s is 5.00006e+06 servo periods "
               "(at most 20000): T2 = MAX_ACCELERATION / MAX_JERK = 5000 s");
-    EXPECT_EQ(load_error("[AXIS_Y]\nMAX_VELOCITY = 30000\nMAX_ACCELERATION = 1\n"),
-              "mill.ini:3: [AXIS_Y]MAX_ACCELERATION: the filter delay T1 + ... + Tn = 30000 s is 3e+07 servo periods "
-              "(at most 20000): T1 = MAX_VELOCITY / MAX_ACCELERATION = 30000 s");
+    EXPECT_EQ(load_error("[AXIS_Y]\nMAX_VELOCITY = 30000\nMAX_ACCELERATION = 1\n[FIRTP]\nSTAGES = 1\nT1 = 30000\n"),
+              "mill.ini:6: [FIRTP]T1: the filter delay T1 + ... + Tn = 30000 s is 3e+07 servo periods (at most 20000)");
     EXPECT_EQ(load_error("[FIRTP]\nSTAGES = 3\nT3 = 25\n"),
               "mill.ini:3: [FIRTP]T3: the filter delay T1 + ... + Tn = 25.11 s is 25110 servo periods (at most 20000)");
-    EXPECT_EQ(load_error("[EMCMOT]\nSERVO_PERIOD = 1000\n"),
+    EXPECT_EQ(load_error("[EMCMOT]\nSERVO_PERIOD = 1000\n[FIRTP]\nT1 = 0.06\n"),
               "mill.ini:2: [EMCMOT]SERVO_PERIOD: the filter delay T1 + ... + Tn = 0.11 s is 110000 servo periods "
               "(at most 20000): the servo period is too short");
     EXPECT_EQ(load_error("[FIRTP]\nMODES = 0.001\n"),
@@ -45,15 +45,29 @@ TEST(MachineRefusals, FilterWindowTooLongNamesTheLimitThatMakesIt) {
               "of this mode");
     // Long but within the window: accepted (20 s at 1 ms).
     EXPECT_EQ(load_error("[FIRTP]\nT1 = 10\nT2 = 9.9\n"), "no error");
+    // Smoothing at the limits has no window: slow limits make slow moves, not a refusal.
+    EXPECT_EQ(load_error("[AXIS_X]\nMAX_VELOCITY = 300\nMAX_JERK = 1\n"), "no error");
+    EXPECT_EQ(load_error("[EMCMOT]\nSERVO_PERIOD = 1000\n"), "no error");
 }
 
 TEST(MachineRefusals, StageNeitherGivenNorDerivableNamesStages) {
     const std::string no_jerk = "[AXIS_X]\nMAX_JERK = 0\n[AXIS_Y]\nMAX_JERK = 0\n[AXIS_Z]\nMAX_JERK = 0\n";
-    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 2\n"),
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 2\nT1 = 0.06\n"),
               "mill.ini:8: [FIRTP]STAGES: filter times: T2 is neither given nor derivable from the axis limits or a mode");
-    EXPECT_EQ(load_error(no_jerk), "mill.ini:0: filter times: T2 is neither given nor derivable from the axis limits or a mode");
-    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 1\n"), "no error");
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nT1 = 0.06\n"),
+              "mill.ini:0: filter times: T2 is neither given nor derivable from the axis limits or a mode");
+    EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 1\nT1 = 0.06\n"), "no error");
     EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nT2 = 0.02\n"), "no error");
+    EXPECT_EQ(load_error(no_jerk), "no error");  // smoothing at the limits: acceleration-limited only
+}
+
+// Smoothing at the limits needs each declared axis' acceleration limit.
+TEST(MachineRefusals, DeclaredAxisWithoutAccelerationIsRefused) {
+    EXPECT_EQ(load_error("[AXIS_C]\nMAX_VELOCITY = 3600\n"),
+              "mill.ini:2: [AXIS_C]MAX_ACCELERATION is missing: moves are smoothed at each axis' acceleration limit "
+              "(or give [FIRTP]T1 for the paper's fixed chain)");
+    EXPECT_EQ(load_error("[AXIS_C]\nMAX_VELOCITY = 3600\n[FIRTP]\nT1 = 0.06\nT2 = 0.05\n"), "no error");
+    EXPECT_EQ(load_error("[AXIS_C]\nMAX_VELOCITY = 3600\nMAX_ACCELERATION = 7200\n"), "no error");
 }
 
 TEST(MachineRefusals, UntunableModesNameModes) {
@@ -79,7 +93,7 @@ TEST(MachineRefusals, AcceptedMachinesBuildTheComponent) {
         const firtp::MachineConfig m = firtp::load_machine(IniFile::parse(text, "m.ini"));
         firtp::ComponentSettings s;
         s.planner = m.planner_parameters();
-        s.queue = 8;
+        s.planner.queue_capacity = 8;
         EXPECT_NO_THROW(firtp::ComponentCore core(s)) << text;
     }
 }
@@ -87,9 +101,10 @@ TEST(MachineRefusals, AcceptedMachinesBuildTheComponent) {
 // The component refuses a window too long for it (module parameters, settings made in code).
 TEST(MachineRefusals, ComponentRefusesAWindowTooLong) {
     firtp::ComponentSettings s;
+    s.planner.fixed_chain = true;
     s.planner.filters.stages = 2;
     s.planner.filters.T = {15.0, 10.0, 0.0, 0.0};
-    s.queue = 8;
+    s.planner.queue_capacity = 8;
     try {
         firtp::ComponentCore core(s);
         FAIL() << "accepted";

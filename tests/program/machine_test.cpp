@@ -68,11 +68,18 @@ TEST(Machine, DefaultMachine) {
     EXPECT_EQ(firtp::load_machine(IniFile::parse("[FIRTP]\nTOLERANCE = 0.1\n", "m.ini")).arc_chord_tolerance, 0.001);
 }
 
-TEST(Machine, DefaultFilterTimesFromLimits) {
-    const firtp::PlannerParameters p = firtp::default_machine().planner_parameters();
-    EXPECT_EQ(p.filters.stages, 2);
-    EXPECT_DOUBLE_EQ(p.filters.T[0], 0.06);  // 300 / 5000
-    EXPECT_DOUBLE_EQ(p.filters.T[1], 0.05);  // 5000 / 100000
+// Without T1 or MODES the machine smooths at its limits; filter_times() (the fixed chain's, when
+// only some times are given) still derives the rest from the limits.
+TEST(Machine, DefaultMachineSmoothsAtItsLimits) {
+    const firtp::MachineConfig m = firtp::default_machine();
+    EXPECT_FALSE(m.fixed_chain());
+    const firtp::FilterTimes f = m.filter_times();
+    EXPECT_EQ(f.stages, 2);
+    EXPECT_DOUBLE_EQ(f.T[0], 0.06);  // 300 / 5000
+    EXPECT_DOUBLE_EQ(f.T[1], 0.05);  // 5000 / 100000
+    const firtp::PlannerParameters p = m.planner_parameters();
+    EXPECT_FALSE(p.fixed_chain);
+    EXPECT_EQ(p.limits.axis[0].max_acceleration, 5000.0);
     EXPECT_EQ(p.period, 0.001);
     EXPECT_EQ(p.tolerance_meaning, firtp::ToleranceMeaning::corner_point);
 }
@@ -107,7 +114,7 @@ TEST(Machine, LoadsSampleIniOverDefaults) {
 }
 
 TEST(Machine, HighestAxisSetsAxisCount) {
-    EXPECT_EQ(firtp::load_machine(IniFile::parse("[AXIS_W]\nMAX_VELOCITY = 5\n", "m.ini")).limits.axes, 9);
+    EXPECT_EQ(firtp::load_machine(IniFile::parse("[AXIS_W]\nMAX_VELOCITY = 5\nMAX_ACCELERATION = 50\n", "m.ini")).limits.axes, 9);
     EXPECT_EQ(firtp::load_machine(IniFile::parse("[AXIS_X]\nMAX_VELOCITY = 5\n", "m.ini")).limits.axes, 3);
     EXPECT_EQ(firtp::load_machine(IniFile::parse("[EMC]\nX = 1\n", "m.ini")).limits.axes, 3);
 }
@@ -168,8 +175,10 @@ TEST(Machine, IgnoresUnknownKeysOutsideFirtp) {
 
 TEST(Machine, FilterTimesErrorBecomesConfigError) {
     MachineConfig m = firtp::default_machine();
-    m.limits.axis = {};  // nothing to derive T1 from
+    m.limits.axis = {};  // nothing to derive T1 from, nor to smooth at
     EXPECT_THROW(m.filter_times(), ConfigError);
+    EXPECT_THROW(m.planner_parameters(), ConfigError);
+    m.given_times = {0.05};  // the fixed chain: T2 still underivable
     EXPECT_THROW(m.planner_parameters(), ConfigError);
 }
 

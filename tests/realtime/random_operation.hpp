@@ -52,8 +52,9 @@ struct StreamRing {
     BlockSource source() { return {read, this}; }
 };
 
-// The built-in machine (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3, T from the limits) planned for a
-// highest override of `max_rate`, or (limits = false) the paper's T1 148 / T2 89 ms, no limits.
+// The built-in machine (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3: smoothing at the limits) planned for a
+// highest override of `max_rate`, or (limits = false) the paper's fixed chain T1 148 / T2 89 ms,
+// no limits.
 inline ComponentSettings operation_settings(bool limits, double max_rate = 1.5) {
     ComponentSettings s;
     if (limits) {
@@ -61,6 +62,7 @@ inline ComponentSettings operation_settings(bool limits, double max_rate = 1.5) 
         m.max_feed_override = max_rate;
         s.planner = m.planner_parameters();
     } else {
+        s.planner.fixed_chain = true;
         s.planner.filters.stages = 2;
         s.planner.filters.T = {0.148, 0.089, 0.0, 0.0};
         s.planner.period = 0.001;

@@ -2,14 +2,13 @@
 // random programs with overrides, holds, aborts, disabling and stream faults. Counted by hooks in
 // this program (rt_probe.hpp), armed around the servo-thread calls only:
 //   ComponentCore::update (the component's real-time logic, planning on acceptance included),
-//   Interpolator::tick, TpCore's servo-thread calls (firtp_tp's tpRunCycle, tpAdd*, tpPause ...),
+//   Planner::add and tick, TpCore's servo-thread calls (firtp_tp's tpRunCycle, tpAdd*, tpPause ...),
 //   and firtp.update itself in firtp.so, run by hal-shim's servo thread (stepped, and on the
 //   real-time clock while the host and the bridge stream over LCM in another thread).
 #include "random_operation.hpp"
 #include "rt_probe.hpp"
 
 #include <firtp/host.hpp>
-#include <firtp/interpolator.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/servo_chain.hpp>
@@ -151,13 +150,15 @@ TEST_P(ComponentRealTime, UpdateNeitherAllocatesNorLocks) {
 std::string machine_name(const ::testing::TestParamInfo<bool>& p) { return p.param ? "WithLimits" : "NoLimits"; }
 INSTANTIATE_TEST_SUITE_P(Machines, ComponentRealTime, ::testing::Values(true, false), machine_name);
 
-// Interpolator::tick alone, planning outside the counted calls: bursts of blocks, rate changes,
-// holds and aborts (rate 0, then the queue dropped).
-TEST(InterpolatorRealTime, TickNeitherAllocatesNorLocks) {
-    PlannerParameters p = test::operation_settings(true).planner;
-    const FirChain chain(p.filters);
-    Interpolator interpolator(chain, p.period, 64, AxisVector::Zero(), rate_limits(p));
-    Planner planner(p, chain, AxisVector::Zero());
+// The planner alone, adding blocks and ticking in the counted calls (both run in the servo
+// thread): bursts of blocks, rate changes, holds and aborts (stop, then everything dropped), at
+// the limits and with the paper's fixed chain.
+class PlannerRealTime : public ::testing::TestWithParam<bool> {};
+
+TEST_P(PlannerRealTime, AddAndTickNeitherAllocateNorLock) {
+    PlannerParameters p = test::operation_settings(GetParam()).planner;
+    p.queue_capacity = 64;
+    Planner planner(p, AxisVector::Zero());
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Totals totals;
@@ -166,39 +167,40 @@ TEST(InterpolatorRealTime, TickNeitherAllocatesNorLocks) {
     int aborts = 0, bursts = 0, ends = 0;
     bool aborting = false;
     for (int k = 0; k < 600'000; ++k) {
-        if (!aborting && interpolator.idle()) {  // at rest: exactly on the last target; the next burst
+        rt_probe::arm();
+        if (!aborting && planner.idle()) {  // at rest: exactly on the last target; the next burst
             ASSERT_EQ(state.position, target);
             ends += bursts > 0;
             ++bursts;
             const int n = 1 + static_cast<int>(unit(rng) * 40);
-            for (int i = 0; i < n && interpolator.free() > 0; ++i) {
+            for (int i = 0; i < n && planner.free() > 0; ++i) {
                 Block b;
                 for (int a = 0; a < 3; ++a) b.target[a] = target[a] + 20.0 * (unit(rng) - 0.5);
                 b.feed = 10 + 290 * unit(rng);
                 b.tolerance = 0.01 + 0.2 * unit(rng);
-                ASSERT_EQ(planner.add(b, interpolator), Result::ok);
+                ASSERT_EQ(planner.add(b), Result::ok);
                 target = b.target;
             }
+            planner.finish();
         }
         const double u = unit(rng);
-        rt_probe::arm();
-        if (!aborting && u < 0.001) interpolator.set_rate(u < 0.0002 ? 0.0 : 0.3 + 1.2 * unit(rng));
-        if (!aborting && u > 0.9998) interpolator.set_rate(0.0), interpolator.abort(), aborting = true, ++aborts;
-        interpolator.tick(state);
-        const bool flushed = interpolator.take_flushed();
+        if (!aborting && u < 0.001) planner.set_rate(u < 0.0002 ? 0.0 : 0.3 + 1.2 * unit(rng));
+        if (!aborting && u > 0.9998 && !planner.idle()) planner.abort(), aborting = true, ++aborts;
+        planner.tick(state);
+        const bool flushed = planner.take_flushed();
         totals.add(rt_probe::disarm());
-        if (flushed) {  // stopped on the path, queue dropped: plan from there
-            planner.reset(interpolator.rest_position(), interpolator.now_tick());
-            target = interpolator.rest_position();
-            interpolator.set_rate(1.0);
+        if (flushed) {  // stopped on the path, everything dropped: plan from there
+            target = planner.rest_position();
+            planner.set_rate(1.0);
             aborting = false;
         }
     }
-    expect_clean(totals, "Interpolator::tick");
+    expect_clean(totals, "Planner::add and Planner::tick");
     std::printf("  %d bursts of blocks ended exactly on their target, %d aborts\n", ends, aborts);
     EXPECT_GT(aborts, 10);
     EXPECT_GT(ends, 100);
 }
+INSTANTIATE_TEST_SUITE_P(Machines, PlannerRealTime, ::testing::Values(true, false), machine_name);
 
 // firtp_tp's servo-thread calls: a move added per period when there is room (lines and arcs),
 // run_cycle every period, pause/resume, override and aborts; the rebuild for the axis limits

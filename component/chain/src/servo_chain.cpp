@@ -33,7 +33,6 @@ std::vector<std::string> module_arguments(const MachineConfig& machine, const Ch
     const PlannerParameters p = machine.planner_parameters();
     std::vector<std::string> args{
         cat("axes=", std::to_string(machine.limits.axes)),
-        cat("stages=", std::to_string(p.filters.stages)),
         cat("tolerance=", number_text(machine.default_tolerance)),
         cat("meaning=", p.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner"),
         cat("period_ns=", std::to_string(std::llround(p.period * 1e9))),
@@ -44,8 +43,11 @@ std::vector<std::string> module_arguments(const MachineConfig& machine, const Ch
         cat("max_feed_override=", number_text(p.max_rate)),
         cat("rate_reserve=", number_text(p.rate_reserve)),
     };
-    for (int i = 0; i < p.filters.stages; ++i)
-        args.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
+    if (p.fixed_chain) {  // the paper's chain; without t1 firtp.so smooths at the limits below
+        args.push_back(cat("stages=", std::to_string(p.filters.stages)));
+        for (int i = 0; i < p.filters.stages; ++i)
+            args.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
+    }
     auto per_axis = [&](const char* name, double AxisLimits::*limit) {
         std::string list;
         for (int a = 0; a < p.limits.axes; ++a) list += cat(a ? "," : "", number_text(p.limits.axis[a].*limit));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -79,6 +80,7 @@ FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
 }
 
 MachineLimits planned_limits(const PlannerParameters& parameters) {
+    if (!parameters.fixed_chain) return parameters.limits;  // the override is planned, not scaled
     const double m = std::max(parameters.max_rate, 1.0), keep = 1.0 - parameters.rate_reserve;
     MachineLimits planned = parameters.limits;
     for (AxisLimits& l : planned.axis) {
@@ -88,6 +90,15 @@ MachineLimits planned_limits(const PlannerParameters& parameters) {
     }
     planned.max_linear_velocity /= m;
     return planned;
+}
+
+double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance) {
+    constexpr double shrink_share = 0.9;
+    double squares = 0.0;
+    for (int i = 0; i < filters.stages; ++i) squares += filters.T[static_cast<std::size_t>(i)] * filters.T[static_cast<std::size_t>(i)];
+    if (!(squares > 0.0) || !(radius > 0.0) || !std::isfinite(tolerance) || !(tolerance > 0.0))
+        return std::numeric_limits<double>::infinity();
+    return std::sqrt(24.0 * radius * shrink_share * tolerance / squares);
 }
 
 const char* validate_rate(const PlannerParameters& parameters) {

@@ -1,6 +1,6 @@
 #include <firtp/trajectory.hpp>
 
-#include <firtp/interpolator.hpp>
+#include <firtp/planner.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -9,32 +9,23 @@ namespace firtp {
 
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                            std::span<const Block> blocks) {
-    const FirChain chain(parameters.filters);
-    Interpolator interpolator(chain, parameters.period, parameters.queue_capacity, start, rate_limits(parameters));
-    Planner planner(parameters, chain, start);
-
+    Planner planner(parameters, start);
     Trajectory trajectory;
     trajectory.start = start;
     std::size_t next = 0;
     for (;;) {
         for (; next < blocks.size(); ++next) {
-            CornerReport corner;
-            bool has_corner = false;
-            const std::uint64_t refused = planner.stats().refused;
-            const Result result = planner.add(blocks[next], interpolator, &corner, &has_corner);
+            const Result result = planner.add(blocks[next]);
             if (result == Result::queue_full) break;
             if (result == Result::invalid_block)
-                throw std::invalid_argument(
-                    "line " + std::to_string(blocks[next].line) +
-                    (planner.stats().refused > refused
-                         ? ": no feed, down to a stop, keeps this block within its tolerance and the axis limits"
-                         : ": invalid block (non-finite target, feed <= 0 or bad tolerance)"));
-            if (has_corner) trajectory.corners.push_back(corner);
+                throw std::invalid_argument("line " + std::to_string(blocks[next].line) + ": " + planner.refusal());
         }
+        if (next == blocks.size()) planner.finish();
         AxisState state;
-        interpolator.tick(state);
+        planner.tick(state);
         trajectory.samples.push_back(state);
-        if (next == blocks.size() && interpolator.idle()) break;
+        for (CornerReport r; planner.take_report(r);) trajectory.corners.push_back(r);
+        if (next == blocks.size() && planner.idle()) break;
     }
     trajectory.cycle_time = trajectory.samples.back().time;
     trajectory.stats = planner.stats();

@@ -39,13 +39,7 @@ std::string plane_name(const ArcPlane& plane) {
 Interpreter::Interpreter(const MachineConfig& machine, const AxisVector& start, std::vector<Block>& blocks)
     : machine_(machine), position_(start), blocks_(blocks) {
     state_.tolerance = machine.default_tolerance;
-    try {
-        const FilterTimes filters = machine.filter_times();
-        for (int i = 0; i < filters.stages; ++i)
-            filter_time_squares_ += filters.T[static_cast<std::size_t>(i)] * filters.T[static_cast<std::size_t>(i)];
-    } catch (const ConfigError&) {
-        filter_time_squares_ = 0.0;  // no curvature limit on arc feeds
-    }
+    if (machine.fixed_chain()) filters_ = machine.filter_times();  // its arcs' feed is capped
 }
 
 bool Interpreter::run(const LineWords& w, const Where& at) {
@@ -161,7 +155,8 @@ void Interpreter::arc(const LineWords& w, const AxisVector& target, int column, 
     const double length = geometry.helix_length();
     const double chord_path = length / chords;  // each chord's share of the arc
     const double radius = std::min(geometry.start_radius, geometry.end_radius);
-    double speed = std::min(state_.feed / 60.0, arc_speed_limit(radius, inner_tolerance));
+    double speed = state_.feed / 60.0;
+    if (filters_) speed = std::min(speed, arc_speed_limit(*filters_, radius, inner_tolerance));
     AxisVector from = position_;
     for (int k = 1; k <= chords; ++k) {
         const AxisVector to = geometry.point(static_cast<double>(k) / chords);
@@ -237,15 +232,6 @@ int Interpreter::arc_turns(const LineWords& w, const Where& at) const {
 std::string Interpreter::too_many_blocks() const {
     const std::string most = std::to_string(machine_.max_program_blocks);
     return cat("the program needs more than ", most, " blocks ([FIRTP]MAX_PROGRAM_BLOCKS = ", most, ")");
-}
-
-// The FIR chain pulls a circle of radius R inwards by about v^2 * sum(T_i^2) / (24 R): keep that within
-// 90 % of the tolerance the chords blend with. The rest is for the chords and the line-arc junctions;
-// a shrink of the whole tolerance leaves the planner no room and the feed goes stop-and-go.
-double Interpreter::arc_speed_limit(double radius, double tolerance) const {
-    constexpr double shrink_share = 0.9;
-    if (!(filter_time_squares_ > 0.0) || !std::isfinite(tolerance) || !(tolerance > 0.0)) return infinity;
-    return std::sqrt(24.0 * radius * shrink_share * tolerance / filter_time_squares_);
 }
 
 void Interpreter::push(const AxisVector& target, double feed, Termination termination, double tolerance,

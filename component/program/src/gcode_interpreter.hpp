@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,13 +42,12 @@ private:
     void arc(const LineWords& w, const AxisVector& target, int column, const Where& at);
     Eigen::Vector2d arc_centre(const LineWords& w, const AxisVector& target, int column, const Where& at) const;
     int arc_turns(const LineWords& w, const Where& at) const;
-    double arc_speed_limit(double radius, double tolerance) const;
     std::string too_many_blocks() const;
     void push(const AxisVector& target, double feed, Termination termination, double tolerance, MotionType type,
               int column, const Where& at);
 
     const MachineConfig& machine_;
-    double filter_time_squares_ = 0.0;  // sum of T_i^2, 0 when the filter times are not known
+    std::optional<FilterTimes> filters_;  // the paper's fixed chain, whose arcs need a feed cap
     AxisVector position_;
     std::vector<Block>& blocks_;
     Modal state_;

@@ -193,12 +193,36 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
     if (*validate_window(f, m.period) != '\0') refuse_window(f.delay(), "=", tuned);
 }
 
+// Smoothing at the limits needs an acceleration limit for every axis (T1 of a move = its speed
+// change over the acceleration of its most loaded axis).
+// Limit-driven smoothing needs each axis' acceleration limit. An axis without an [AXIS_] section
+// is one the machine does not have: a move of it is refused when planned.
+void check_accelerations(const IniFile& ini, const MachineConfig& m) {
+    bool any = false;
+    for (int a = 0; a < m.limits.axes; ++a) {
+        const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
+        const bool given = m.limits.axis[static_cast<std::size_t>(a)].max_acceleration > 0.0;
+        any = any || given;
+        if (given || ini.section(section).empty()) continue;
+        throw ConfigError(cat(ini.file_name(), ":", std::to_string(ini.section(section).front()->line), ": [", section,
+                              "]MAX_ACCELERATION is missing: moves are smoothed at each axis' acceleration limit "
+                              "(or give [FIRTP]T1 for the paper's fixed chain)"));
+    }
+    if (!any)
+        throw ConfigError(cat(ini.file_name(), ":0: no axis has a MAX_ACCELERATION: moves are smoothed at each axis' "
+                              "acceleration limit (or give [FIRTP]T1 for the paper's fixed chain)"));
+}
+
 void check_override(const std::optional<double>& value, const char* flag, const char* what) {
     if (value && !(std::isfinite(*value) && *value > 0.0))
         throw ConfigError(cat(flag, ": must be a positive ", what));
 }
 
 }  // namespace
+
+bool MachineConfig::fixed_chain() const {
+    return !tuning.modes.empty() || std::any_of(given_times.begin(), given_times.end(), [](double t) { return t > 0.0; });
+}
 
 FilterTimes MachineConfig::filter_times() const {
     if (!tuning.modes.empty()) return tuned_filters().filters;
@@ -226,7 +250,12 @@ TunedFilters MachineConfig::tuned_filters() const {
 
 PlannerParameters MachineConfig::planner_parameters() const {
     PlannerParameters p;
-    p.filters = filter_times();
+    p.fixed_chain = fixed_chain();
+    if (p.fixed_chain) p.filters = filter_times();
+    else if (std::none_of(limits.axis.begin(), limits.axis.begin() + limits.axes,
+                          [](const AxisLimits& l) { return l.max_acceleration > 0.0; }))
+        throw ConfigError("no axis has an acceleration limit (MAX_ACCELERATION): moves are smoothed at the limits "
+                          "(or give T1 for the paper's fixed chain)");
     p.period = period;
     p.tolerance_meaning = tolerance_meaning;
     p.limits = limits;
@@ -253,7 +282,8 @@ MachineConfig load_machine(const IniFile& ini) {
     read_period(ini, m);
     read_axes(ini, m);
     read_firtp(ini, m);
-    check_filters(ini, m);
+    if (m.fixed_chain()) check_filters(ini, m);
+    else check_accelerations(ini, m);
     return m;
 }
 

@@ -37,6 +37,10 @@ struct MachineLimits {
 };
 
 struct PlannerParameters {
+    // The paper's mode: `filters` smooth every block, corners overlap by Tk (paper_planner.hpp).
+    // Otherwise every velocity change is smoothed at the limits (kernel.hpp, lookahead.hpp) and
+    // `filters` is not used.
+    bool fixed_chain = false;
     FilterTimes filters;
     double period = 0.001;  // servo period, s
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;
@@ -44,13 +48,23 @@ struct PlannerParameters {
     std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
     MachineLimits limits;               // held at every sample, overlaps included (0 = not limited)
     double max_rate = 1.0;              // highest feed override (MAX_FEED_OVERRIDE): limits hold up to it
-    double rate_reserve = 0.2;          // share of the acceleration and jerk limits kept for rate ramps
+    double rate_reserve = 0.2;          // the paper's mode: share of a and j kept for its clock's rate ramps
+    // From rest, the first step waits at most this long (s) for the look-ahead to settle it.
+    double start_wait = 0.05;
 };
 
-// What a plan at rate 1 may use so that any rate up to max_rate M, ramped within rate_limits()
-// (time_scale.hpp), keeps `limits`: v / M, a (1 - r) / M^2, j (1 - r) / M^3 (r = rate_reserve).
-// Time scaling leaves the path alone: overlaps, and so corner errors, do not depend on the rate.
+// What a plan at rate 1 may use. The paper's mode scales its clock for the override, so any rate
+// up to max_rate M, ramped within rate_limits() (time_scale.hpp), must keep `limits`: v / M,
+// a (1 - r) / M^2, j (1 - r) / M^3 (r = rate_reserve); time scaling leaves the path alone, so
+// corner errors do not depend on the rate. Smoothing at the limits plans every rate as its own
+// motion: the limits themselves.
 MachineLimits planned_limits(const PlannerParameters& parameters);
+
+// The paper's fixed chain pulls a circle of radius R inwards by about v^2 sum(T_i^2) / (24 R): the
+// highest arc speed that keeps this within 90 % of `tolerance` (the rest is for the chords and the
+// junctions: with all of it the planner has no room and the feed goes stop-and-go). +inf without
+// a tolerance. Smoothing at the limits needs no cap: it checks every chord's corner.
+double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance);
 
 // Checks max_rate >= 1 and 0 < rate_reserve < 1, finite; returns an empty string or the reason.
 const char* validate_rate(const PlannerParameters& parameters);

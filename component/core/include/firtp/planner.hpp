@@ -1,109 +1,98 @@
-// Accepts blocks one at a time and schedules their velocity pulses: each new block starts
-// Td - Tk after the previous pulse ended (Eq. 11), Tk chosen so the corner stays within the
-// block's tolerance. Causal: a block is scheduled when it arrives, with no look-ahead, so a
-// stream can start moving at once; a block that arrives late only shortens Tk.
+// firtp's planning core behind one object: blocks in, one commanded axis state per servo period
+// out. Real-time after construction: no allocation, no locks, no I/O, no exceptions.
 //
-// Two long blocks (pulses of at least Td) and no axis limits: Eq. 13/14 (CornerModel). Short
-// blocks, where three or more may share a filter window, and machines with axis limits: the
-// candidate schedule is checked on its servo samples (SampledWindow), overlaps included.
+// Two modes, chosen by the parameters:
+//   limit-driven (the default): every velocity change is smoothed at the machine's own limits
+//     (kernel.hpp), corners pass at the highest speed their tolerance allows (junction.hpp), and
+//     a look-ahead plans speeds so the tool can always stop in time (lookahead.hpp);
+//   the paper's fixed chain ([FIRTP]T1..T4 or MODES): one chain for every block and the
+//     overlap Tk of Sencer et al. 2015 at each corner (paper_planner.hpp).
+// Both write legs to one timeline (timeline.hpp), which the servo tick evaluates.
 //
-// Neighbouring corners never share a filter window: Tk_(i-1) + Tk_i <= Tv_i + Td - period (notes,
-// with one servo period to spare for the sampled error bound), kept by giving each corner at most
-// what the previous corner left of the incoming block, and at most half of the outgoing block. Collinear blocks of equal feed join into one pulse (Tk = Td) when
-// the previous corner's overlap lies inside the run, so the join cannot change that corner. A
-// junction where the path goes straight on is not a corner: its tolerance bounds nothing, and
-// the path there stays within the neighbouring corners' tolerances.
+//     Planner planner(parameters, start);
+//     planner.add(block);          // as blocks come; Result::queue_full: try again later
+//     planner.finish();            // the program ends here (or the stream stalled)
+//     planner.tick(state);         // every servo period
 #pragma once
 
-#include <firtp/corner.hpp>
 #include <firtp/fir_chain.hpp>
-#include <firtp/interpolator.hpp>
+#include <firtp/lookahead.hpp>
+#include <firtp/paper_planner.hpp>
 #include <firtp/parameters.hpp>
-#include <firtp/sampled_window.hpp>
+#include <firtp/report.hpp>
+#include <firtp/timeline.hpp>
 #include <firtp/types.hpp>
 
 #include <cstdint>
-#include <optional>
+#include <memory>
 
 namespace firtp {
 
-// What the planner decided at the junction between two blocks.
-struct CornerReport {
-    std::int64_t line = 0;                  // line of the block that ends at the corner
-    AxisVector point = AxisVector::Zero();  // programmed corner point
-    double beta = 0.0;                      // change of direction, rad
-    double tk = 0.0;                        // overlap used, s
-    double tk_tolerance = 0.0;              // overlap the tolerance alone allows, s
-    double epsilon = 0.0;                   // tolerance asked for (+inf: none)
-    double predicted_error = 0.0;           // continuous corner error at tk (per the tolerance meaning)
-    bool exact_stop = false;
-};
-
 class Planner {
 public:
-    Planner(const PlannerParameters& parameters, const FirChain& chain, const AxisVector& start);
+    // Throws std::invalid_argument for parameters that cannot work (init only).
+    Planner(const PlannerParameters& parameters, const AxisVector& start);
+    Planner(const Planner&) = delete;
+    Planner& operator=(const Planner&) = delete;
+    ~Planner();
 
-    // Validates, plans and queues one block. Result::queue_full leaves everything as it was.
-    // A zero-length block is accepted and skipped. When the block forms a corner with the
-    // previous one, *corner (if given) is filled and *has_corner set. Result::invalid_block also
-    // when no feed, down to the slowest pulse the clock holds, passes the window check (a stop
-    // slow enough always does, unless the committed samples themselves fail it): nothing is
-    // committed unchecked, and the tool rests at the previous block's end (Stats::refused).
-    Result add(const Block& block, Interpolator& out, CornerReport* corner = nullptr,
-               bool* has_corner = nullptr);
+    // Validates and queues one block: invalid_block for a NaN, an infinite or non-positive feed
+    // or a bad tolerance (nothing changes), and in the paper's mode when no feed passes the check
+    // (stats().refused); queue_full leaves everything as it was. A zero-length block is skipped.
+    Result add(const Block& block);
+    // Why the last add() returned invalid_block, in words.
+    const char* refusal() const { return refusal_; }
+    // No more blocks follow for now: the last one ends the motion.
+    void finish();
+    // One servo period: settle what starts now, then the state at this period.
+    void tick(AxisState& out);
 
-    // Blocks counted since construction.
-    struct Stats {
-        std::uint64_t slowed = 0;    // planned below their feed (window check: tolerance or limits)
-        std::uint64_t crawling = 0;  // ... below 0.1 % of it
-        std::uint64_t refused = 0;   // no feed passed the check (see add)
-    };
-    const Stats& stats() const { return stats_; }
+    // Feed override (0 = hold: stop on the path as soon as the limits allow; 1 = as programmed, up
+    // to max_rate).
+    void set_rate(double rate);
+    // Stop on the path, then drop everything; take_flushed() says when it came to rest.
+    void abort();
+    bool aborting() const { return aborting_; }
+    bool take_flushed();
+    // Drop everything now and rest at `position` (drives off, a restart).
+    void reset(const AxisVector& position);
+    // The axes are at `position` moving at `velocity` (found so at a start): continue from there
+    // and stop within the limits (one velocity step, braking.hpp); rest at braking_rest().
+    void brake_from(const AxisVector& position, const AxisVector& velocity);
+    AxisVector braking_rest(const AxisVector& position, const AxisVector& velocity) const;
 
-    // After the interpolator was reset or flushed: plan from rest at `position` (filter-clock tick).
-    void reset(const AxisVector& position, std::int64_t tick = 0);
-
-    const AxisVector& goal() const { return last_.end; }
+    bool idle() const;                 // nothing waits, nothing moves
+    // Blocks that move (zero-length ones are skipped) accepted, and of those finished, since the
+    // last reset or abort.
+    std::uint64_t accepted() const { return accepted_; }
+    std::uint64_t finished() const { return timeline_.blocks_retired() - finished_base_; }
+    std::size_t depth() const;         // blocks accepted and not finished, at most
+    std::size_t free() const;          // blocks add() takes now without queue_full
+    std::int64_t current_line() const { return timeline_.current_line(); }
+    const AxisVector& goal() const;    // end of the last block accepted
+    const AxisVector& rest_position() const { return timeline_.rest_position(); }
+    std::int64_t ticks() const { return timeline_.ticks(); }
+    double period() const { return parameters_.period; }
+    const PlannerParameters& parameters() const { return parameters_; }
+    bool fixed_chain() const { return paper_ != nullptr; }
+    const FirChain& chain() const { return chain_; }  // the paper's mode
+    const TimeScale& time_scale() const { return timeline_.time_scale(); }  // the paper's mode: its clock
+    const PlannerStats& stats() const;
+    // The next corner report (the paper's mode: as blocks are added; else as corners start).
+    bool take_report(CornerReport& report);
 
 private:
-    struct Last {
-        bool moving = false;                    // a block exists to blend with
-        AxisVector end = AxisVector::Zero();
-        AxisVector run_delta = AxisVector::Zero();  // incoming pulse: this block and collinear ones joined to it
-        double run_tv = 0.0;
-        double tk_in = 0.0;                     // overlap at the corner where the run started
-        double feed = 0.0;
-        Termination termination = Termination::exact_stop;
-        double tolerance = 0.0;
-        std::int64_t line = 0;
-        std::int64_t end_tick = 0;              // pulse end, as tick + offset
-        double end_offset = 0.0;
-    };
-
-    struct Start {
-        std::int64_t tick;
-        double offset;
-        double tk;   // the overlap this start gives (less than asked when the block came late)
-    };
-    struct Choice {
-        double tk;
-        double feed;
-    };
-
-    Start schedule(double tk, std::int64_t now) const;
-    double latest_overlap(std::int64_t now) const;
-    // None: no feed passes (add refuses the block).
-    std::optional<Choice> search_window(const AxisVector& delta, double length, double feed, double beta,
-                                        double epsilon, std::int64_t now) const;
-    // The highest feed, up to `feed`, at which the block starting at `start` passes the window
-    // check (from rest or after a stop, where only the feed can keep the limits); none: no feed.
-    std::optional<double> feed_for_start(const AxisVector& delta, double length, double feed, const Start& start) const;
-
     PlannerParameters parameters_;
-    const FirChain* chain_;
-    SampledWindow window_;
-    Last last_;
-    Stats stats_;
+    FirChain chain_;
+    Timeline timeline_;
+    std::unique_ptr<Lookahead> lookahead_;
+    std::unique_ptr<PaperPlanner> paper_;
+    double rate_ = 1.0;  // asked for by set_rate (an abort stops regardless)
+    bool aborting_ = false;
+    bool flushed_ = false;
+    const char* refusal_ = "";
+    std::uint64_t accepted_ = 0;
+    std::uint64_t finished_base_ = 0;
 };
 
 }  // namespace firtp

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <firtp/parameters.hpp>
-#include <firtp/planner.hpp>
+#include <firtp/report.hpp>
 #include <firtp/types.hpp>
 
 #include <span>
@@ -15,11 +15,11 @@ struct Trajectory {
     std::vector<CornerReport> corners; // one per junction, in program order
     AxisVector start = AxisVector::Zero();
     double cycle_time = 0.0;           // time of the last sample
-    Planner::Stats stats;              // the planner's counts: blocks slowed, crawling
+    PlannerStats stats;                // the planner's counts: blocks slowed, crawling
 };
 
-// Runs planner and interpolator together as the servo thread would; throws std::invalid_argument
-// naming the block's line when a block is invalid.
+// Runs the planner as the servo thread would, blocks arriving as fast as it takes them; throws
+// std::invalid_argument naming the block's line when a block is invalid.
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                            std::span<const Block> blocks);
 

@@ -27,9 +27,12 @@ struct MachineConfig {
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // [FIRTP]TOLERANCE_MEANING corner|contour
     double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
     double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
-    double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: share of a and j limits kept for override ramps
+    double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: fixed chain: share of a and j kept for override ramps
     std::size_t max_program_blocks = default_max_program_blocks;  // [FIRTP]MAX_PROGRAM_BLOCKS (whole, >= 1)
 
+    // The paper's fixed chain: filter times given ([FIRTP]T1..T4) or tuned to [FIRTP]MODES.
+    // Otherwise every move is smoothed at the axis limits and the filter times are not used.
+    bool fixed_chain() const;
     // Untuned without modes: given times, else T1 = max v/a, T2 = max a/j (filter_times_from_limits).
     // With modes: tuned to them at the smallest delay, those times as lower bounds (tune_filter_times).
     FilterTimes filter_times() const;

@@ -1,14 +1,19 @@
-#include <firtp/interpolator.hpp>
-
-#include <cmath>
+#include <firtp/timeline.hpp>
 
 namespace firtp {
 
-Interpolator::Interpolator(const FirChain& chain, double period, std::size_t capacity, const AxisVector& start,
-                           const RateLimits& rates)
-    : chain_(&chain), period_(period), ring_(capacity), base_(start), scale_(rates) {}
+StepSample Leg::progress(double t) const {
+    const StepSample up = rising.step(t);
+    const StepSample down = falling.step(t - fall);
+    return {(up.position - down.position) / tv, (up.velocity - down.velocity) / tv,
+            (up.acceleration - down.acceleration) / tv, (up.jerk - down.jerk) / tv};
+}
 
-void Interpolator::reset(const AxisVector& position) {
+Timeline::Timeline(double period, std::size_t capacity, const AxisVector& start, double max_width,
+                   const RateLimits& rates)
+    : period_(period), max_width_(max_width), ring_(capacity), base_(start), scale_(rates) {}
+
+void Timeline::reset(const AxisVector& position) {
     head_ = 0;
     count_ = 0;
     base_ = position;
@@ -17,51 +22,37 @@ void Interpolator::reset(const AxisVector& position) {
     flushed_ = false;
 }
 
-void Interpolator::brake_from(const AxisVector& position, const AxisVector& velocity) {
-    const double td = chain_->delay();
-    reset(position - velocity * (0.5 * td));  // S(Td) = 1/2 of a pulse of width Td
-    PlannedBlock b;
-    b.tv = td;
-    b.delta = velocity * td;
-    b.end = position + velocity * (0.5 * td);
-    const double start = static_cast<double>(clock_tick_) + clock_fraction_ - td / period_;  // periods
-    b.start_tick = static_cast<std::int64_t>(std::floor(start));
-    b.start_offset = (start - static_cast<double>(b.start_tick)) * period_;
-    push(b);
-    scale_.set_target(1.0);
-    scale_.snap();
-}
-
-bool Interpolator::push(const PlannedBlock& block) {
+bool Timeline::push(const Leg& leg) {
     if (count_ == ring_.size()) return false;
-    ring_[(head_ + count_) % ring_.size()] = block;
+    ring_[(head_ + count_) % ring_.size()] = leg;
     ++count_;
     return true;
 }
 
-void Interpolator::tick(AxisState& out) {
-    const double td = chain_->delay();
-    // Retire blocks whose window has passed: their end point becomes the rest position, exactly.
+void Timeline::tick(AxisState& out) {
+    // Retire legs whose falling kernel has passed: their end point becomes the rest position, exactly.
     while (count_ > 0) {
-        const PlannedBlock& front = ring_[head_];
-        if (local_time(front) < front.tv + td) break;
+        const Leg& front = ring_[head_];
+        if (clock_time(front) < front.finish()) break;
         base_ = front.end;
+        if (front.last_of_block) ++blocks_retired_;
         head_ = (head_ + 1) % ring_.size();
         --count_;
+        ++retired_;
     }
     AxisVector velocity = AxisVector::Zero(), acceleration = AxisVector::Zero(), jerk = AxisVector::Zero();
     out.time = static_cast<double>(ticks_) * period_;
     out.position = base_;
     for (std::size_t i = 0; i < count_; ++i) {
-        const PlannedBlock& b = ring_[(head_ + i) % ring_.size()];
-        const double t = local_time(b);
-        if (t <= 0.0) break;  // blocks start in queue order
-        const StepSample s = chain_->pulse(t, b.tv);
-        out.position += b.delta * s.position;
-        velocity += b.delta * s.velocity;
-        acceleration += b.delta * s.acceleration;
-        jerk += b.delta * s.jerk;
-        line_ = b.line;
+        const Leg& leg = at(i);
+        const double t = clock_time(leg);
+        if (beyond(leg, t)) break;
+        const StepSample s = leg.progress(t);
+        out.position += leg.delta * s.position;
+        velocity += leg.delta * s.velocity;
+        acceleration += leg.delta * s.acceleration;
+        jerk += leg.delta * s.jerk;
+        if (t > 0.0) line_ = leg.line;  // the newest leg in motion
     }
     // Chain rule for the scaled clock (rate r, r', r''): v = r p', a = r^2 p'' + r' p',
     // j = r^3 p''' + 3 r r' p'' + r'' p'.
@@ -81,7 +72,7 @@ void Interpolator::tick(AxisState& out) {
         flushed_ = true;
     }
     ++ticks_;
-    const bool moving = count_ > 0 && local_time(ring_[head_]) > 0.0;
+    const bool moving = count_ > 0 && clock_time(ring_[head_]) > 0.0;
     if (!moving) scale_.snap();  // nothing to ramp: an override set before a start applies at once
     else if (clock_fraction_ > 0.0 && scale_.steady_at_one()) scale_.trim(clock_fraction_, period_);  // off the grid
     clock_fraction_ += scale_.advance(period_);

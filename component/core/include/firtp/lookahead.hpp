@@ -1,0 +1,248 @@
+// The limit-driven planner: blocks wait in a look-ahead window until their motion is settled, then
+// become legs on the timeline just before their kernels start.
+//
+// Each block gets an entry, a cruise and an exit speed (profile.hpp); where blocks meet, the step
+// between the two speeds is the corner (junction.hpp). The speeds come from two passes, as in any
+// look-ahead planner:
+//   backward: from a stop at the end of the known path, the highest speed each block may enter
+//             and leave with and still stop in time (at the highest feed override);
+//   forward:  from the motion already under way, the speeds actually planned, at the feed the
+//             override asks for.
+// Junction kinds: a stop (exact stop, reversal, end of the path), a corner at one speed on both
+// sides (where a block is long enough for ramps of its own), or, between two short blocks (dense
+// paths: chords, CAM output), a step that changes speed and direction at once.
+//
+// What the passes guarantee by construction: the spacing rules of profile.hpp at every step, so
+// velocity, acceleration and jerk stay within the limits. What they estimate: the corner error
+// where neighbouring steps overlap a corner. So every change is checked before it is accepted:
+// the limits by the exact sweep and the corner errors by the closest approach (motion_check.hpp);
+// where a corner fails, its speed is lowered and the passes run again. The plan that was accepted
+// last is always a checked plan that stops at the end of the known path, so whatever has started
+// can always be brought to rest.
+//
+// A block's speeds are final once blocks after it can no longer change them (the backward bound
+// at its exit is its own, not the end's): its steps start only then, or when the window is full,
+// or when the motion would otherwise have to start late. So the motion does not depend on when
+// blocks arrive, only on which.
+#pragma once
+
+#include <firtp/junction.hpp>
+#include <firtp/kernel.hpp>
+#include <firtp/motion_check.hpp>
+#include <firtp/parameters.hpp>
+#include <firtp/profile.hpp>
+#include <firtp/report.hpp>
+#include <firtp/timeline.hpp>
+#include <firtp/types.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace firtp {
+
+class Lookahead {
+public:
+    Lookahead(const PlannerParameters& parameters, Timeline& timeline, const AxisVector& start);
+
+    // Validated by the caller; queue_full leaves everything as it was.
+    Result add(const Block& block);
+    // No more blocks follow for now: the stop at the end is the end of the program.
+    void finish() { finished_ = true; }
+    // Freeze every step whose kernel starts by the timeline's current tick: its leg goes to the
+    // timeline. Before tick().
+    void commit();
+    // Feed override: the rate for the blocks not under way yet; 0 = hold: stop as soon as the
+    // limits allow, on the path; a rate again resumes (where the stop has not begun, the block
+    // goes on as if there had been none).
+    void set_rate(double rate);
+    double rate() const { return held_ ? 0.0 : rate_; }
+    // Everything planned is dropped; rest at `position`.
+    void reset(const AxisVector& position);
+
+    bool empty() const { return count_ == 0; }           // nothing waits
+    bool at_rest() const { return !moving(); }  // nothing under way (blocks may wait)
+    std::size_t depth() const { return count_; }
+    std::size_t free() const { return count_ < capacity_ ? capacity_ - count_ : 0; }
+    const AxisVector& goal() const { return goal_; }
+    const PlannerStats& stats() const { return stats_; }
+    // The next corner report, once its junction's motion is final (false: none).
+    bool take_report(CornerReport& report);
+    double max_kernel_width() const { return max_width_; }
+
+private:
+    enum class Kind : std::uint8_t { stop, corner, dense };
+
+    // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
+    // reach. Sparse steps use the machine's T2 = max A / J and A. A dense run (dense.hpp) uses
+    // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)): the run's accelerations may then swing
+    // from -h to +h within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
+    // h T2_d^2 / 24 <= eps / 2.
+    struct Regime {
+        double t2 = 0.0;
+        AxisVector cap = AxisVector::Zero();
+    };
+
+    struct Segment {
+        AxisVector start, end, u;
+        double length = 0.0;
+        double feed = 0.0;       // at 100 %, capped by the axis velocity limits along u
+        double feed_max = 0.0;   // at the highest override
+        double alpha = 0.0;      // T1 per unit of speed change along u (in its regime)
+        bool short_block = false;  // shorter than a ramp to its feed and back
+        bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
+        Regime regime;           // of its own steps (start, stop, ramps)
+        bool exact_stop = false;
+        bool forced_stop = false;  // no checked plan passed it: the tool stops there
+        bool hold_split = false;   // it ends where a hold stops the tool (the rest of the block follows)
+        bool hold_end = false;     // a hold stops the tool at its end (no split needed)
+        bool brake = false;        // a hold is braking through it: its speeds as low as they go
+        double tolerance = 0.0;
+        MotionType type = MotionType::feed;
+        std::int64_t line = 0;
+        // The junction after it (valid once the next segment exists; the last one ends in a stop).
+        Turn turn;
+        Kind kind = Kind::stop;
+        Regime junction;           // the junction step's smoothing
+        double turn_alpha = 0.0;   // its T1 per unit of corner speed, in that regime
+        double sparse_cap = 0.0;   // closed-form corner speed in the sparse regime (decides smoothness)
+        double corner_cap = 0.0;   // closed-form speed limit of the corner (one speed both sides)
+        CornerBound cap_bound = CornerBound::feed;
+        double learned_cap = 0.0;  // lowered where the exact check failed (+inf: none)
+        // Backward pass.
+        double entry_max = 0.0, exit_max = 0.0;
+        bool entry_end_limited = true, exit_end_limited = true;  // by the stop at the end of the known path
+        // Forward pass: the plan. Legs at a, p, b last x0, xp, x1 (merged legs: 0).
+        double a = 0.0, p = 0.0, b = 0.0;
+        double x0 = 0.0, xp = 0.0, x1 = 0.0;
+        double rest = 0.0;         // stop: at rest after the stop step until the next start step
+        bool unfit = false;        // no legs at these speeds cover it (fits() is not monotone in the speeds)
+        double next_a = 0.0;       // the speed after the junction (the next segment's a)
+        double predicted_error = 0.0;  // the check's closest approach at the junction
+        CornerBound bound = CornerBound::feed;  // what limited the speed at the junction
+        int bound_axis = -1;
+        double enter = 0.0;        // forward pass: its entry step's centre, s (timeline clock)
+    };
+
+    // A step of the plan: velocity change, the box of its first stage, its kernel.
+    struct Step {
+        AxisVector dv = AxisVector::Zero();
+        double box = 0.0;
+        double t2 = 0.0;
+        Kernel kernel;
+        StepShape shape() const { return {box, dv.norm() > 0.0 ? AxisVector(dv.normalized()) : AxisVector::Zero(), t2}; }
+    };
+    // The step after the frozen one, as the plan has it now.
+    enum class StepKind : std::uint8_t { ramp, junction, stop, start };
+    struct NextStep {
+        Step step;
+        StepKind kind = StepKind::ramp;
+        double centre = 0.0;      // seconds from the timeline's now
+        double speed_after = 0.0; // command speed of the leg it starts (0: at rest)
+    };
+
+    // Where the motion stands: the last step whose kernel has started ("frozen") and the leg
+    // after it. Everything after it may still change.
+    struct Frozen {
+        bool moving = false;     // a leg is under way after the frozen step
+        bool any = false;        // a step has frozen since the last reset
+        bool junction = false;   // the frozen step is a corner between two segments (not a ramp)
+        double speed = 0.0;      // that leg's command speed
+        Step step;               // the frozen step
+        std::int64_t tick = 0;   // its centre: tick * period + offset
+        double offset = 0.0;
+        double consumed = 0.0;   // that leg starts this far into the front segment
+        double rest = 0.0;       // at rest: the next start step comes at least this long after it
+    };
+
+    Segment& seg(std::size_t i) { return segments_[(head_ + i) % segments_.size()]; }
+    const Segment& seg(std::size_t i) const { return segments_[(head_ + i) % segments_.size()]; }
+    double seg_length(std::size_t i) const { return i == 0 ? seg(0).length - frozen_.consumed : seg(i).length; }
+    double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
+    bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
+    bool exit_is_stop(std::size_t i) const { return i + 1 == count_ || seg(i).kind == Kind::stop; }
+
+    // Regimes and steps.
+    Regime dense_regime(double epsilon) const;
+    double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
+    Step make_step(const AxisVector& dv, const Regime& regime) const;
+    Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
+    Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop)
+    Step stop_step(std::size_t i) const;             // segment i's stop at its end
+    Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
+    StepShape entry_shape(std::size_t i, double a) const;
+    StepShape exit_shape(std::size_t i, double b) const;
+
+    // Geometry and caps.
+    void link(std::size_t i);               // junction after segment i: turn, kind, caps
+    void classify(std::size_t i);           // dense or not, from its length and its junctions
+    void junction_caps(std::size_t i);      // regime and corner cap of the junction after i
+    bool smooth(std::size_t i) const;       // junction i does not slow the blocks down
+    double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
+    double dense_estimate(std::size_t i) const;   // ... and planned dense
+    double room_cap(std::size_t i, double alpha) const;  // dense i: highest c with c alpha <= L/c
+
+    // Passes.
+    std::size_t backward(std::size_t last); // returns the first segment whose bounds changed
+    void forward(std::size_t from);
+    void plan_segment(std::size_t i, double entry);
+    double entry_for(std::size_t i) const;  // the forward entry speed of segment i
+    double max_entry(std::size_t i, double exit_max) const;
+    bool dense_ok(std::size_t i, double b, double a) const;  // the dense junction after i
+    double dense_exit_max(std::size_t i, double next_entry_max) const;
+    ProfileInput profile_input(std::size_t i, double a, double b) const;
+    bool fits(std::size_t i, double a, double p, double b) const;
+
+    // Motion.
+    double frozen_centre() const;           // seconds from the timeline's now
+    NextStep next_step() const;
+    bool final_for_start() const;
+    void freeze(const NextStep& next);
+    void pop_front(bool stop);
+    void refresh_current_leg();
+    void replan(std::size_t first_changed);
+    bool check(std::size_t first, std::size_t* bad);
+    // Hold: brake from the motion under way and split the block where the earliest stop falls.
+    void place_hold_stop();
+    bool hold_stop_placed() const;
+    void unsplit();  // resume before the hold's stop began: the split block is whole again
+    void insert_after(std::size_t i, const Segment& s);
+    void erase(std::size_t i);
+    // Legs of segments [first, count) (and, from segment 0, the timeline's legs before them), in
+    // seconds from the timeline's now; leg_of_[i] is segment i's last leg, when_[i] its exit step.
+    void build_legs(std::size_t first);
+
+    bool moving() const { return frozen_.moving || !timeline_->idle(); }
+
+    PlannerParameters parameters_;
+    MachineLimits limits_;
+    SpacingRules rules_;
+    Regime sparse_;
+    Timeline* timeline_;
+    double max_width_ = 0.0;
+    double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
+    double rate_ = 1.0;
+    double max_rate_ = 1.0;
+    bool held_ = false;
+    bool finished_ = false;
+    std::int64_t waiting_since_ = -1;  // tick the first step of a start began to wait for the look-ahead
+    double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
+
+    std::size_t capacity_;           // blocks add() takes
+    std::vector<Segment> segments_;  // ring: capacity_ + 1 (the spare for a hold's split)
+    std::size_t head_ = 0;
+    std::size_t count_ = 0;
+    AxisVector goal_;
+    Frozen frozen_;
+
+    PlannerStats stats_;
+    LimitSweep sweep_;
+    std::vector<TimedLeg> legs_;        // scratch for checks
+    std::vector<std::size_t> leg_of_;   // scratch: index in legs_ of each segment's last leg
+    std::vector<double> when_;          // scratch: exit step centre of each segment (check clock)
+    std::vector<double> enter_;         // scratch: entry step centre of each segment
+    std::vector<Segment> saved_;        // the accepted plan, restored when a change fails its check
+    std::vector<CornerReport> reports_; // ring of corner reports, filled as junctions freeze
+    std::size_t report_head_ = 0, report_count_ = 0;
+};
+
+}  // namespace firtp

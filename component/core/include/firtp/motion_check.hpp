@@ -1,0 +1,105 @@
+// Checks of planned motion in closed form, on the piecewise polynomials themselves (no sampling).
+//
+// Limits: every edge of every leg is a velocity step smoothed by its kernel. For two moving
+// averages the acceleration of a step is a trapezoid and its jerk piecewise constant, so the sum
+// over all steps is piecewise linear (acceleration) and piecewise constant (jerk) between the
+// kernels' knots: sweeping the knots in time order finds the largest acceleration and jerk
+// exactly, and the largest velocity at a knot or where an acceleration crosses zero. A chain of
+// more stages is bounded by its first two (the others are moving averages, which do not raise a
+// peak).
+//
+// Corners: the tool's position near a corner point P is a sum over the legs in motion; its
+// closest approach is at most the distance at any time, found here by Newton's method on the
+// distance from the time the command passes P. The drives go straight from servo sample to servo
+// sample (at t = k period on the common clock), so the chords between the samples around that
+// time are measured too: the error is the larger of the two.
+#pragma once
+
+#include <firtp/kernel.hpp>
+#include <firtp/parameters.hpp>
+#include <firtp/types.hpp>
+
+#include <algorithm>
+#include <span>
+
+namespace firtp {
+
+// A leg with its rising kernel starting at `rise` seconds on a common clock.
+struct TimedLeg {
+    AxisVector delta = AxisVector::Zero();
+    double tv = 0.0;
+    double rise = 0.0;
+    double fall = 0.0;  // the falling kernel starts at rise + fall
+    Kernel rising;
+    Kernel falling;
+
+    double start() const { return rise + std::min(0.0, fall); }
+    double finish() const { return rise + std::max(fall + falling.width(), rising.width()); }
+
+    // Set by index_legs(): where the leg starts along the legs' path (from the first leg's start),
+    // its two steps' centres and half the widest kernel of the set (0: not indexed).
+    AxisVector before = AxisVector::Zero();
+    double rise_centre = 0.0;
+    double fall_centre = 0.0;
+    double reach = 0.0;
+};
+
+// Indexes legs in path order (their steps' centres do not decrease) so that relative_state()
+// visits only the legs in motion at a time: a leg whose falling centre is more than `reach`
+// before t has ended, one whose rising centre is more than `reach` after t has not begun. O(n).
+void index_legs(std::span<TimedLeg> legs);
+
+struct LimitCheck {
+    bool ok = true;
+    double time = 0.0;  // where the first excess was found
+    int axis = 0;
+    int derivative = 0;  // 1 velocity, 2 acceleration, 3 jerk
+    double value = 0.0;
+};
+
+// The largest |velocity|, |acceleration| and |jerk| of the legs' sum on [from, to] against
+// `limits` (relative slack 1e-9; limits of 0 are not checked). A one-stage kernel's jump in
+// acceleration counts as jump / period of jerk, as a drive differentiating the samples sees it.
+// Allocation-free after construction: sized for `max_legs` legs.
+class LimitSweep {
+public:
+    explicit LimitSweep(std::size_t max_legs);
+    LimitCheck check(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits,
+                     double period);
+
+    struct Knot {
+        double t;
+        AxisVector value;  // the jump
+        int order;         // of the derivative that jumps: 1 velocity, 2 acceleration, 3 jerk
+    };
+
+private:
+    std::vector<Knot> knots_;
+};
+
+// Position relative to the end of legs[corner] (the corner point) at time t, with velocity,
+// acceleration and jerk: legs up to `corner` count S - 1, later ones S. O(legs in motion at t)
+// when indexed (index_legs), else O(legs).
+AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, double t);
+
+struct Approach {
+    double distance = 0.0;  // the larger of smooth and sampled
+    double time = 0.0;      // of the smooth path's approach
+    double smooth = 0.0;    // of the smooth path from the corner point, at `time`
+    double sampled = 0.0;   // of the chords between the samples within sampled_chords periods of it
+};
+
+constexpr int sampled_chords = 3;
+
+// An upper bound of the closest approach of the path to the corner point at the end of
+// legs[corner], searched from time `guess`; samples at t = k period, or with `phases` > 1 the worst
+// of the sample grids shifted by 1 / phases of a period (a scaled clock samples off the grid).
+Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period,
+                          int phases = 1);
+
+// The largest distance from the programmed path (the legs commanded nearby, as straight
+// segments) of the samples (t = k period) within `width` / 2 of time `at`, the corner at the end
+// of legs[corner] (contour tolerance; `width`: the widest kernel).
+double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period);
+
+}  // namespace firtp

@@ -1,0 +1,69 @@
+// The speed profile of one block: up to three legs at constant command speed (entry a, cruise p,
+// exit b) joined by speed steps along the block, between the steps at its two ends.
+//
+// Principle: every step k has a kernel two_stage(T1_k, T2) with the machine's common jerk time T2
+// (kernel.hpp). The motion is then a moving average of length T2 of a piecewise linear velocity W
+// whose ramps are boxes of acceleration dV_k / T1_k, centred on the steps. The limits hold when
+//   - each box is within the acceleration limits (T1_k = max_a |dV_a| / A_a),
+//   - boxes do not overlap: consecutive steps are at least (T1_k + T1_k+1) / 2 apart, and
+//   - boxes whose accelerations have opposite signs on an axis (and together exceed J_a T2) are
+//     at least T2 apart, so the moving average never sees the acceleration swing by more than
+//     J_a T2 within its window: the jerk is at most J_a.
+// Velocity stays between the legs' velocities. These are the spacing rules (spacing()); the
+// planner keeps them at every step, so the limits need no search.
+#pragma once
+
+#include <firtp/parameters.hpp>
+#include <firtp/types.hpp>
+
+namespace firtp {
+
+// One end of a step as the spacing rules see it: the box width T1, the direction of dV and the
+// step's jerk stage T2 (dense runs use their own, see lookahead.hpp).
+struct StepShape {
+    double box = 0.0;                       // T1, s (0: no step)
+    AxisVector direction = AxisVector::Zero();  // of dV (unit or zero)
+    double t2 = 0.0;
+};
+
+// The shared constants of the spacing rules.
+struct SpacingRules {
+    MachineLimits limits;
+    double t2 = 0.0;  // the common jerk time
+
+    // Least distance in command time between the centres of consecutive steps x then y. Steps
+    // with different jerk stages do not share the moving average: their kernels stay apart.
+    double spacing(const StepShape& x, const StepShape& y) const;
+    // True when boxes in directions x and y need a jerk gap of T2 between them (opposite signs on
+    // an axis whose accelerations at the limit would swing by more than J T2).
+    bool needs_gap(const AxisVector& x, const AxisVector& y) const;
+};
+
+// A long block between its end steps, at given entry, cruise and exit speeds.
+struct ProfileInput {
+    double length = 0.0;
+    double alpha = 0.0;          // T1 per unit of speed change along the block: max_a |u_a| / A_a
+    AxisVector u = AxisVector::Zero();
+    StepShape in;                // the step at the start (before the entry leg)
+    StepShape out;               // the step at the end (after the exit leg)
+    // Extra time on the entry and exit legs: across a junction, this block's ramps and the
+    // neighbour's may have opposite signs, and the junction step alone may not keep them T2 apart.
+    double in_reserve = 0.0;
+    double out_reserve = 0.0;
+    // The entry step is already under way: its centre was this long ago (command time), and the
+    // next step's kernel must not start before now. -inf: no such constraint.
+    double entry_elapsed = -1e300;
+};
+
+struct ProfileLegs {
+    double a = 0.0, p = 0.0, b = 0.0;     // speeds of the entry, cruise and exit legs
+    double x0 = 0.0, xp = 0.0, x1 = 0.0;  // their durations (command time); 0 where a leg is merged
+    bool fits = false;
+    double duration() const { return x0 + xp + x1; }
+};
+
+// The shortest legs for speeds a -> p -> b (a ramp step a -> p and p -> b where they differ), and
+// whether they fit in the block's length. The remaining length goes to the fastest leg.
+ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& in, double a, double p, double b);
+
+}  // namespace firtp

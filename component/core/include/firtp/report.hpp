@@ -1,0 +1,47 @@
+// What the planner tells about its decisions: per corner, and counts.
+#pragma once
+
+#include <firtp/types.hpp>
+
+#include <cstdint>
+
+namespace firtp {
+
+// What limited the speed at a junction (for the report).
+enum class CornerBound : std::uint8_t {
+    feed,         // the programmed feed (or an axis velocity limit) on one side
+    tolerance,    // the corner's tolerance with its most loaded axis at the acceleration limit
+    room,         // the block before or after is too short to change speed in (dense paths)
+    lookahead,    // a later corner or the stop at the end of the known path
+    checked,      // the closed-form estimate was lowered after the exact check
+    stop,         // an exact stop: asked for, a reversal, or the end of the program
+};
+const char* describe(CornerBound bound);
+
+// What the planner decided at the junction between two blocks.
+struct CornerReport {
+    std::int64_t line = 0;                  // line of the block that ends at the corner
+    AxisVector point = AxisVector::Zero();  // programmed corner point
+    double beta = 0.0;                      // change of direction, rad
+    double speed_in = 0.0;                  // command speed before and after the corner, units/s
+    double speed_out = 0.0;
+    double epsilon = 0.0;                   // tolerance asked for (+inf: none)
+    double predicted_error = 0.0;           // closest approach found by the check (with the chord margin)
+    bool exact_stop = false;
+    CornerBound bound = CornerBound::feed;
+    int axis = -1;                          // the most loaded axis of the corner step (tolerance, room)
+    // The paper's mode only: overlap used and what the tolerance alone allows.
+    double tk = 0.0;
+    double tk_tolerance = 0.0;
+};
+
+// Counts since construction.
+struct PlannerStats {
+    std::uint64_t slowed = 0;    // blocks planned below their feed
+    std::uint64_t crawling = 0;  // ... below 0.1 % of it
+    std::uint64_t refused = 0;   // blocks no speed could plan (paper mode: no feed passed the check)
+    std::uint64_t checks_failed = 0;  // plans the exact check turned back (corner speed lowered)
+    std::uint64_t unfit = 0;          // segment plans whose legs did not cover the block (a defect)
+};
+
+}  // namespace firtp

@@ -1,0 +1,47 @@
+#include <firtp/junction.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace firtp {
+
+namespace {
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double reversal_sine = 1.0 - 1e-12;  // s = sin(beta / 2) this close to 1: the path turns back
+}  // namespace
+
+Turn make_turn(const AxisVector& u_in, const AxisVector& u_out, const MachineLimits& limits) {
+    Turn t;
+    t.du = u_out - u_in;
+    t.beta = 2.0 * std::atan2(t.du.norm(), (u_in + u_out).norm());
+    t.s = std::sin(0.5 * t.beta);
+    for (int i = 0; i < limits.axes; ++i) {
+        const double acc = limits.axis[i].max_acceleration;
+        if (acc > 0.0) t.alpha = std::max(t.alpha, std::abs(t.du[i]) / acc);
+    }
+    t.reversal = t.s >= reversal_sine;
+    return t;
+}
+
+double corner_speed(double alpha, double t2, double s, double epsilon) {
+    if (!(s > 0.0) || !(alpha > 0.0) || t2 < 0.0) return infinity;
+    if (!(epsilon > 0.0)) return 0.0;
+    const double r = epsilon / s;  // err / s
+    if (t2 <= 0.0) return std::sqrt(4.0 * r / alpha);  // one stage: err = s V^2 alpha / 4
+    // V alpha >= t2: err / s = (3 V^2 alpha^2 + t2^2) / (12 alpha).
+    const double square = (12.0 * alpha * r - t2 * t2) / (3.0 * alpha * alpha);
+    if (square > 0.0 && std::sqrt(square) * alpha >= t2) return std::sqrt(square);
+    // V alpha < t2: err / s = V (3 t2^2 + V^2 alpha^2) / (12 t2), increasing in V; Cardano for
+    // V^3 + p V + q = 0 with p > 0 (one real root).
+    const double p = 3.0 * t2 * t2 / (alpha * alpha), q = -12.0 * t2 * r / (alpha * alpha);
+    const double root = std::sqrt(0.25 * q * q + p * p * p / 27.0);
+    double v = std::cbrt(-0.5 * q + root) + std::cbrt(-0.5 * q - root);
+    for (int i = 0; i < 3; ++i) v -= (v * v * v + p * v + q) / (3.0 * v * v + p);  // the sum cancels when p dominates
+    return v;
+}
+
+double chord_margin(double acceleration, double jerk, double period) {
+    return (acceleration + jerk * period) * period * period / 8.0;
+}
+
+}  // namespace firtp

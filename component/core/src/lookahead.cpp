@@ -1,0 +1,606 @@
+#include <firtp/lookahead.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdlib>
+
+namespace firtp {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr int bisection_steps = 48;
+
+// Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
+template <class F>
+double highest(F&& ok, double lo, double hi) {
+    if (!(hi > lo)) return lo;
+    if (ok(hi)) return hi;
+    for (int i = 0; i < bisection_steps && hi - lo > 1e-13 * hi; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (ok(mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+// Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
+template <class F>
+double lowest(F&& ok, double lo, double hi) {
+    if (!(hi > lo)) return hi;
+    if (ok(lo)) return lo;
+    for (int i = 0; i < bisection_steps && hi - lo > 1e-13 * hi; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (ok(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+AxisVector unit(const AxisVector& v) {
+    const double n = v.norm();
+    return n > 0.0 ? AxisVector(v / n) : AxisVector::Zero();
+}
+
+// Highest speed along direction u that the axis velocity limits (and, for moves of linear axes,
+// [TRAJ]MAX_LINEAR_VELOCITY) allow.
+double velocity_cap(const MachineLimits& limits, const AxisVector& u) {
+    double cap = infinity;
+    const bool linear = u.head<3>().norm() > 1e-12 || u.tail<3>().norm() > 1e-12;
+    if (linear && limits.max_linear_velocity > 0.0) cap = limits.max_linear_velocity;
+    for (int i = 0; i < limits.axes; ++i) {
+        const double v = limits.axis[i].max_velocity;
+        if (v > 0.0 && std::abs(u[i]) > 0.0) cap = std::min(cap, v / std::abs(u[i]));
+    }
+    return cap;
+}
+
+}  // namespace
+
+const char* describe(CornerBound bound) {
+    switch (bound) {
+        case CornerBound::feed: return "feed";
+        case CornerBound::tolerance: return "tolerance";
+        case CornerBound::room: return "block length";
+        case CornerBound::lookahead: return "look-ahead";
+        case CornerBound::checked: return "checked";
+        case CornerBound::stop: return "exact stop";
+    }
+    return "?";
+}
+
+Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, const AxisVector& start)
+    : parameters_(parameters), limits_(parameters.limits), timeline_(&timeline),
+      max_rate_(std::max(parameters.max_rate, 1.0)), capacity_(std::max<std::size_t>(parameters.queue_capacity, 2)),
+      segments_(capacity_ + 1),  // one spare: a hold splits a block even when the window is full
+      goal_(start), sweep_(3 * segments_.size() + 64), saved_(segments_.size()) {
+    rules_.limits = limits_;
+    rules_.t2 = jerk_time(limits_);
+    sparse_.t2 = rules_.t2;
+    double jerk = 0.0, acc = 0.0;
+    bool all_jerk = true;
+    for (int i = 0; i < limits_.axes; ++i) {
+        const AxisLimits& l = limits_.axis[i];
+        sparse_.cap[i] = l.max_acceleration > 0.0 ? l.max_acceleration : infinity;
+        if (!(l.max_acceleration > 0.0)) continue;  // an axis the machine does not have (it never moves)
+        jerk += l.max_jerk * l.max_jerk;
+        acc += l.max_acceleration * l.max_acceleration;
+        all_jerk = all_jerk && l.max_jerk > 0.0;
+    }
+    for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
+    jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
+    legs_.reserve(3 * segments_.size() + 64);
+    leg_of_.resize(segments_.size());
+    when_.resize(segments_.size());
+    enter_.resize(segments_.size());
+    reports_.resize(64);
+}
+
+void Lookahead::reset(const AxisVector& position) {
+    head_ = 0;
+    count_ = 0;
+    goal_ = position;
+    frozen_ = Frozen{};
+    finished_ = false;
+    waiting_since_ = -1;
+}
+
+// ---- Regimes and steps -------------------------------------------------------------------------
+
+Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
+    Regime r = sparse_;
+    if (!(rules_.t2 > 0.0)) return r;
+    r.t2 = 0.0;
+    for (int i = 0; i < limits_.axes; ++i) {
+        const AxisLimits& l = limits_.axis[i];
+        if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
+        const double h = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
+                                                : l.max_acceleration;
+        r.cap[i] = h;
+        r.t2 = std::max(r.t2, 2.0 * h / l.max_jerk);
+    }
+    return r;
+}
+
+double Lookahead::box(const AxisVector& dv, const Regime& regime) const {
+    double t = 0.0;
+    for (int i = 0; i < limits_.axes; ++i)
+        if (std::isfinite(regime.cap[i])) t = std::max(t, std::abs(dv[i]) / regime.cap[i]);
+    return t;
+}
+
+Lookahead::Step Lookahead::make_step(const AxisVector& dv, const Regime& regime) const {
+    Step s;
+    s.dv = dv;
+    s.box = box(dv, regime);
+    s.t2 = regime.t2;
+    s.kernel = two_stage(s.box, s.t2);
+    return s;
+}
+
+Lookahead::Step Lookahead::ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, seg(i).regime); }
+
+Lookahead::Step Lookahead::junction_step(std::size_t i) const {
+    const Segment& s = seg(i);
+    return make_step(s.next_a * seg(i + 1).u - s.b * s.u, s.junction);
+}
+
+Lookahead::Step Lookahead::stop_step(std::size_t i) const { return ramp_step(i, -seg(i).b); }
+
+Lookahead::Step Lookahead::entry_step(std::size_t i) const {
+    if (i == 0 && frozen_.moving) return frozen_.step;
+    if (entry_is_stop(i)) return ramp_step(i, seg(i).a);
+    return junction_step(i - 1);
+}
+
+StepShape Lookahead::entry_shape(std::size_t i, double a) const {
+    const Segment& s = seg(i);
+    if (i == 0 && frozen_.moving) return frozen_.step.shape();
+    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
+    const Segment& prev = seg(i - 1);
+    return {a * prev.turn_alpha, unit(prev.turn.du), prev.junction.t2};  // the corner, one speed both sides
+}
+
+StepShape Lookahead::exit_shape(std::size_t i, double b) const {
+    const Segment& s = seg(i);
+    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2};  // the stop step
+    return {b * s.turn_alpha, unit(s.turn.du), s.junction.t2};
+}
+
+// ---- Geometry and caps -------------------------------------------------------------------------
+
+double Lookahead::room_cap(std::size_t i, double alpha) const {
+    if (!(alpha > 0.0)) return infinity;
+    return std::sqrt(seg_length(i) / alpha);
+}
+
+bool Lookahead::smooth(std::size_t i) const {
+    const Segment& s = seg(i);
+    return s.kind != Kind::stop && s.sparse_cap >= std::min(s.feed_max, seg(i + 1).feed_max);
+}
+
+// A short block planned sparse hosts the steps at both its ends in its one leg, about T2 apart
+// (spacing rules): it keeps the lower of its corners' sparse caps, or ramps up from them and down
+// again (a triangle at the acceleration along it, plus T2), whichever is faster on average.
+double Lookahead::sparse_estimate(std::size_t i) const {
+    const Segment& s = seg(i);
+    const double length = seg_length(i);
+    double corners = s.feed_max;
+    if (rules_.t2 > 0.0) corners = std::min(corners, length / rules_.t2);
+    if (i > 0 && seg(i - 1).kind != Kind::stop) corners = std::min(corners, seg(i - 1).sparse_cap);
+    if (i + 1 < count_ && s.kind != Kind::stop) corners = std::min(corners, s.sparse_cap);
+    const double ramps = length / (2.0 * std::sqrt(length * s.alpha) + rules_.t2);
+    return std::max(corners, std::min(ramps, s.feed_max));
+}
+
+// Planned dense, its corners' steps must fit the legs on both sides (room) and, with the run's
+// jerk stage, keep about half the tolerance for the step itself (lookahead.hpp, Regime).
+double Lookahead::dense_estimate(std::size_t i) const {
+    double v = seg(i).feed_max;
+    for (std::size_t j : {i - 1, i}) {
+        if (j >= i + 1 || j + 1 >= count_ || seg(j).kind == Kind::stop) continue;  // (i - 1 wraps for i = 0)
+        const Segment& s = seg(j);
+        const Regime r = dense_regime(s.tolerance);
+        const double alpha = box(s.turn.du, r);
+        if (!(alpha > 0.0)) continue;
+        v = std::min(v, std::sqrt(std::min(seg_length(j), seg_length(j + 1)) / alpha));
+        if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance))
+            v = std::min(v, corner_speed(alpha, r.t2, s.turn.s, s.tolerance));
+    }
+    return v;
+}
+
+void Lookahead::classify(std::size_t i) {
+    Segment& s = seg(i);
+    if (i == 0 && frozen_.moving) return;  // under way: it stays what it was planned as
+    const bool entry_smooth = i == 0 || seg(i - 1).kind == Kind::stop || smooth(i - 1);
+    const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || smooth(i);
+    s.dense = s.short_block && ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
+    s.regime = s.dense ? dense_regime(s.tolerance) : sparse_;
+    s.alpha = box(s.u, s.regime);
+}
+
+void Lookahead::junction_caps(std::size_t i) {
+    Segment& s = seg(i);
+    const Segment& n = seg(i + 1);
+    if (s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal) {
+        s.kind = Kind::stop;
+        s.corner_cap = 0.0;
+        s.cap_bound = CornerBound::stop;
+        s.junction = s.regime;
+        s.turn_alpha = 0.0;
+        return;
+    }
+    s.kind = s.dense && n.dense ? Kind::dense : Kind::corner;
+    // A junction next to a dense block is smoothed as the dense run is.
+    s.junction = s.dense ? s.regime : n.dense ? n.regime : sparse_;
+    if (s.dense && n.dense && n.regime.t2 > s.regime.t2) s.junction = n.regime;
+    s.turn_alpha = box(s.turn.du, s.junction);
+    s.corner_cap = infinity;
+    s.cap_bound = CornerBound::feed;
+    if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
+        double epsilon = s.tolerance;
+        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
+        const double height = s.turn_alpha > 0.0 ? s.turn.du.norm() / s.turn_alpha : 0.0;
+        epsilon = epsilon * (1.0 - 1e-6) - chord_margin(height, jerk_norm_, parameters_.period);  // rounding: to spare
+        s.corner_cap = corner_speed(s.turn_alpha, s.junction.t2, s.turn.s, std::max(epsilon, 0.0));
+        s.cap_bound = CornerBound::tolerance;
+    }
+    if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
+        for (std::size_t k : {i, i + 1})
+            if (seg(k).dense) {
+                const double room = room_cap(k, s.turn_alpha);
+                if (room < s.corner_cap) s.corner_cap = room, s.cap_bound = CornerBound::room;
+            }
+}
+
+void Lookahead::link(std::size_t i) {
+    Segment& s = seg(i);
+    s.turn = make_turn(s.u, seg(i + 1).u, limits_);
+    s.learned_cap = infinity;
+    s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal ? Kind::stop : Kind::corner;
+    s.sparse_cap = 0.0;
+    if (s.kind != Kind::stop) {
+        s.sparse_cap = infinity;
+        if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance))
+            s.sparse_cap = corner_speed(s.turn.alpha, rules_.t2, s.turn.s, s.tolerance);
+    }
+    // Whether the blocks on either side are dense depends on this junction: they and the
+    // junctions next to them are decided again.
+    classify(i);
+    classify(i + 1);
+    if (i > 0) junction_caps(i - 1);
+    junction_caps(i);
+}
+
+// ---- The profile of one segment ----------------------------------------------------------------
+
+ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
+    const Segment& s = seg(i);
+    ProfileInput in;
+    in.length = seg_length(i);
+    in.alpha = s.alpha;
+    in.u = s.u;
+    in.in = entry_shape(i, a);
+    in.out = exit_shape(i, b);
+    const double t2 = rules_.t2;
+    // Across a sparse corner the ramps on either side may swing an axis the other way: keep T2
+    // between their boxes, half on each side, where the corner's own box does not.
+    const bool corner_in = i == 0 ? frozen_.moving && frozen_.junction : !entry_is_stop(i);
+    if (corner_in && in.in.t2 == t2) in.in_reserve = 0.5 * std::max(0.0, t2 - in.in.box);
+    if (!exit_is_stop(i) && in.out.t2 == t2) in.out_reserve = 0.5 * std::max(0.0, t2 - in.out.box);
+    if (i == 0 && frozen_.moving) in.entry_elapsed = -frozen_centre();
+    return in;
+}
+
+bool Lookahead::fits(std::size_t i, double a, double p, double b) const {
+    return profile_legs(rules_, profile_input(i, a, b), a, p, b).fits;
+}
+
+// Both segments dense, one speed each (b before, a after): the junction step dV = a u' - b u,
+// its box within each leg (tile), and the corner within its tolerance by estimate: the step's
+// pull towards the inside of the turn, and the run's jerk stage smoothing the curve the steps
+// trace (a T2 moving average of a parabola: a T2^2 / 24). The check measures it exactly.
+bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
+    const Segment& s = seg(i);
+    const Segment& n = seg(i + 1);
+    if (std::max(a, b) > s.learned_cap) return false;
+    const AxisVector dv = a * n.u - b * s.u;
+    const double t1 = box(dv, s.junction);
+    const double leg_s = b > 0.0 ? seg_length(i) / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
+    if (t1 > leg_s || t1 > leg_n) return false;
+    if (s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) return true;
+    const AxisVector m = unit(s.u + n.u);
+    const double inward = (dv - m * dv.dot(m)).norm();
+    const double t2 = s.junction.t2;
+    double estimate = inward * two_stage(t1, t2).lead();
+    const double legs = 0.5 * (std::isfinite(leg_s) ? leg_s : 0.0) + 0.5 * (std::isfinite(leg_n) ? leg_n : 0.0);
+    if (legs > 0.0) estimate += inward / legs * t2 * t2 / 24.0;
+    estimate += chord_margin(t1 > 0.0 ? dv.norm() / t1 : 0.0, jerk_norm_, parameters_.period);
+    double epsilon = s.tolerance;
+    if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
+    return estimate <= epsilon;
+}
+
+double Lookahead::dense_exit_max(std::size_t i, double next_entry_max) const {
+    return highest([&](double b) { return dense_ok(i, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
+}
+
+double Lookahead::max_entry(std::size_t i, double exit_max) const {
+    const Segment& s = seg(i);
+    if (s.dense) {
+        double v = std::min(exit_max, s.feed_max);
+        if (entry_is_stop(i)) v = std::min(v, room_cap(i, s.alpha));  // its start step fits its leg
+        return v;
+    }
+    return highest(
+        [&](double a) {
+            const double b = std::min(a, exit_max);
+            return fits(i, a, std::max(a, b), b);
+        },
+        0.0, s.feed_max);
+}
+
+// ---- Passes ------------------------------------------------------------------------------------
+
+std::size_t Lookahead::backward(std::size_t last) {
+    std::size_t changed = count_;
+    for (std::size_t i = last + 1; i-- > 0;) {
+        Segment& s = seg(i);
+        double exit_max = 0.0;
+        bool exit_end = false;
+        if (exit_is_stop(i)) {
+            exit_max = s.dense ? std::min(s.feed_max, room_cap(i, s.alpha)) : s.feed_max;
+            exit_end = i + 1 == count_ && !finished_;
+        } else {
+            const Segment& n = seg(i + 1);
+            if (s.kind == Kind::corner) {
+                const double cap = std::min({s.corner_cap, s.learned_cap, s.feed_max, n.feed_max});
+                exit_max = std::min(n.entry_max, cap);
+                exit_end = n.entry_max < cap && n.entry_end_limited;
+            } else {
+                exit_max = dense_exit_max(i, n.entry_max);
+                exit_end = n.entry_end_limited;
+            }
+        }
+        const double entry_max = max_entry(i, exit_max);
+        const bool entry_end = exit_end && entry_max < s.feed_max * (1.0 - 1e-12);
+        if (i < last && exit_max == s.exit_max && entry_max == s.entry_max && exit_end == s.exit_end_limited &&
+            entry_end == s.entry_end_limited)
+            break;
+        s.exit_max = exit_max;
+        s.entry_max = entry_max;
+        s.exit_end_limited = exit_end;
+        s.entry_end_limited = entry_end;
+        changed = i;
+    }
+    return changed;
+}
+
+double Lookahead::entry_for(std::size_t i) const {
+    if (i == 0) return frozen_.moving ? frozen_.speed : -1.0;
+    const Segment& prev = seg(i - 1);
+    if (prev.kind == Kind::stop) return -1.0;
+    if (prev.kind == Kind::corner) return prev.b;
+    // Dense: as fast as the junction allows, up to the bound and the feed; braking as little as
+    // it must.
+    const Segment& s = seg(i);
+    const double b = prev.b;
+    auto ok = [&](double a) { return dense_ok(i - 1, b, a); };
+    const double hi = std::min(s.brake ? 0.0 : target(i), s.entry_max), lo = std::min(b, s.entry_max);
+    if (hi >= lo) return ok(lo) ? highest(ok, lo, hi) : lo;
+    return lowest(ok, hi, lo);
+}
+
+void Lookahead::plan_segment(std::size_t i, double entry) {
+    Segment& s = seg(i);
+    const double length = seg_length(i);
+    const double pt = s.brake ? 0.0 : target(i);
+    if (s.dense) {
+        double v = entry >= 0.0 ? entry : std::min(s.entry_max, pt);
+        if (!(v > 0.0)) v = 0.0;
+        s.a = s.p = s.b = v;
+        s.unfit = !(v > 0.0);
+        s.x0 = v > 0.0 ? length / v : 0.0;
+        s.xp = s.x1 = 0.0;
+    } else {
+        double a = entry, p = 0.0, b = 0.0;
+        if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
+            if (a < 0.0) {
+                p = highest([&](double v) { return fits(i, v, v, v); }, 0.0, std::min(pt, s.entry_max));
+                a = p;
+            } else if (pt >= a) {
+                p = highest([&](double v) { return fits(i, a, v, v); }, a, pt);
+            } else if (s.brake) {
+                p = a;  // the stop step itself brakes: no ramp down to a standstill before it
+            } else {
+                p = fits(i, a, pt, pt) ? pt : lowest([&](double v) { return fits(i, a, v, v); }, pt, a);
+            }
+            b = p;
+        } else {
+            const double bt = std::min({s.exit_max, pt, seg(i + 1).brake ? 0.0 : target(i + 1)});
+            if (a < 0.0) {
+                p = highest([&](double v) { return fits(i, v, v, std::min(v, bt)); }, 0.0, std::min(pt, s.entry_max));
+                a = p;
+                b = std::min(p, bt);
+            } else {
+                if (fits(i, a, std::max(a, bt), bt)) b = bt;
+                else if (bt > a) b = highest([&](double v) { return fits(i, a, v, v); }, a, bt);
+                else b = lowest([&](double v) { return fits(i, a, a, v); }, bt, std::min(a, s.exit_max));
+                const double top = std::max(a, b);
+                if (pt >= top) p = highest([&](double v) { return fits(i, a, v, b); }, top, pt);
+                else p = fits(i, a, pt, b) ? pt : lowest([&](double v) { return fits(i, a, v, b); }, pt, top);
+                p = std::max(p, std::min(a, b));  // no standstill inside the block
+            }
+        }
+        const ProfileLegs legs = profile_legs(rules_, profile_input(i, a, b), a, p, b);
+        s.unfit = !legs.fits;  // the check turns it back (its entry corner is lowered)
+        s.a = a, s.p = p, s.b = b;
+        s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;
+    }
+    if (i > 0) {
+        Segment& prev = seg(i - 1);
+        prev.next_a = s.a;
+        if (prev.kind == Kind::stop)  // at rest between the stop and this start
+            prev.rest = rules_.spacing(exit_shape(i - 1, prev.b), entry_shape(i, s.a));
+    }
+}
+
+void Lookahead::forward(std::size_t from) {
+    const double period = parameters_.period;
+    for (std::size_t i = from; i < count_; ++i) {
+        plan_segment(i, entry_for(i));
+        Segment& s = seg(i);
+        if (i == 0) {
+            s.enter = frozen_.moving ? static_cast<double>(frozen_.tick) * period + frozen_.offset
+                                     : static_cast<double>(timeline_->now()) * period + next_step().centre;
+        } else {
+            const Segment& prev = seg(i - 1);
+            s.enter = prev.enter + prev.x0 + prev.xp + prev.x1 + (prev.kind == Kind::stop ? prev.rest : 0.0);
+        }
+    }
+}
+
+// ---- Adding a block ----------------------------------------------------------------------------
+
+Result Lookahead::add(const Block& block) {
+    const AxisVector delta = block.target - goal_;
+    const double length = delta.norm();
+    if (length < min_block_length) return Result::ok;
+    if (count_ >= capacity_) return Result::queue_full;
+    Segment s;
+    s.start = goal_;
+    s.end = block.target;
+    s.u = delta / length;
+    s.length = length;
+    const double cap = velocity_cap(limits_, s.u);
+    s.feed = std::min(block.feed, cap);
+    s.feed_max = std::min(block.feed * max_rate_, cap);
+    s.exact_stop = block.termination == Termination::exact_stop;
+    s.tolerance = block.termination == Termination::blend ? block.tolerance : infinity;
+    s.type = block.type;
+    s.line = block.line;
+    s.regime = sparse_;
+    s.alpha = box(s.u, sparse_);
+    s.short_block = length < s.feed_max * (s.feed_max * s.alpha + rules_.t2);
+    s.kind = Kind::stop;
+    s.junction = s.regime;
+    s.learned_cap = infinity;
+    seg(count_) = s;
+    ++count_;
+    goal_ = block.target;
+    finished_ = false;
+    if (count_ >= 2) link(count_ - 2);
+    else classify(0);
+    replan(backward(count_ - 1));
+    return Result::ok;
+}
+
+void Lookahead::set_rate(double rate) {
+    rate = std::clamp(rate, 0.0, max_rate_);
+    const bool hold = rate == 0.0;
+    if (hold == held_ && (hold || rate == rate_)) return;
+    if (!hold) rate_ = rate;
+    const bool resumed = held_ && !hold;
+    held_ = hold;
+    if (resumed) unsplit();
+    if (count_ > 0) replan(0);
+}
+
+}  // namespace firtp
+
+namespace firtp {
+
+// ---- Hold --------------------------------------------------------------------------------------
+
+void Lookahead::insert_after(std::size_t i, const Segment& s) {
+    for (std::size_t k = count_; k > i + 1; --k) seg(k) = seg(k - 1);
+    seg(i + 1) = s;
+    ++count_;
+}
+
+void Lookahead::erase(std::size_t i) {
+    for (std::size_t k = i; k + 1 < count_; ++k) seg(k) = seg(k + 1);
+    --count_;
+}
+
+bool Lookahead::hold_stop_placed() const {
+    for (std::size_t i = 0; i < count_; ++i) {
+        if (seg(i).hold_split) return true;
+        if (exit_is_stop(i)) return seg(i).brake;  // an exact stop the hold brakes into
+    }
+    return false;
+}
+
+void Lookahead::place_hold_stop() {
+    for (std::size_t i = 0; i < count_; ++i) seg(i).brake = false;
+    if (!frozen_.moving) return;  // at rest: the hold keeps it there
+    double a = frozen_.speed;
+    for (std::size_t i = 0; i < count_; ++i) {
+        Segment& s = seg(i);
+        // The earliest stop in this segment from speed a: one leg, then the stop step.
+        ProfileInput in = profile_input(i, a, a);
+        in.out = {a * s.alpha, -s.u, s.regime.t2};
+        in.out_reserve = 0.0;
+        in.length = 0.0;
+        const double reach = a * profile_legs(rules_, in, a, a, a).x0;
+        const double start = i == 0 ? frozen_.consumed : 0.0;
+        if (!exit_is_stop(i) && reach < seg_length(i) * (1.0 - 1e-9) && count_ < segments_.size()) {
+            Segment rest = s;  // the rest of the block, from the stop on, with the junction after it
+            const double at = start + reach;
+            const AxisVector point = s.start + s.u * at;
+            rest.start = point;
+            rest.length = s.length - at;
+            s.end = point;
+            s.length = at;
+            s.hold_split = true;
+            s.exact_stop = false;
+            s.brake = true;
+            s.turn = make_turn(s.u, s.u, limits_);
+            s.learned_cap = infinity;
+            insert_after(i, rest);
+            junction_caps(i);
+            backward(i + 1);
+            return;
+        }
+        s.brake = true;
+        plan_segment(i, i == 0 ? a : entry_for(i));
+        if (exit_is_stop(i)) return;  // an exact stop comes first: the hold stops there
+        if (!(s.b > 0.0)) {  // it brakes to rest right at its end: the hold stops there
+            s.hold_end = true;
+            junction_caps(i);
+            backward(i);
+            return;
+        }
+        if (i + 1 < count_) seg(i + 1).brake = true;
+        a = s.kind == Kind::corner ? s.b : entry_for(i + 1);
+        if (!(a > 0.0)) return;
+    }
+}
+
+void Lookahead::unsplit() {
+    for (std::size_t i = 0; i < count_; ++i) {
+        Segment& s = seg(i);
+        s.brake = false;
+        if (!s.hold_end) continue;
+        s.hold_end = false;
+        if (i + 1 < count_) junction_caps(i);
+        backward(count_ - 1);
+    }
+    for (std::size_t i = 0; i + 1 < count_; ++i) {
+        Segment& s = seg(i);
+        if (!s.hold_split) continue;
+        const Segment& rest = seg(i + 1);
+        const double length = s.length + rest.length;
+        const AxisVector start = s.start;
+        s = rest;
+        s.start = start;
+        s.length = length;
+        erase(i + 1);
+        if (i + 1 < count_) link(i);
+        else classify(i);
+        backward(count_ - 1);
+        return;
+    }
+}
+
+}  // namespace firtp

@@ -1,0 +1,407 @@
+// The look-ahead's plan as motion: its steps and legs, the checks, and freezing steps onto the
+// timeline as their kernels start.
+#include <firtp/lookahead.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdlib>
+
+namespace firtp {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr int max_check_attempts = 12;
+constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
+constexpr double crawl_fraction = 1e-3;
+constexpr std::size_t report_ring = 64;
+
+void normalise(std::int64_t& tick, double& offset, double period) {
+    const double whole = std::floor(offset / period);
+    tick += static_cast<std::int64_t>(whole);
+    offset -= whole * period;
+    if (offset >= period) offset -= period, ++tick;
+    if (offset < 0.0) offset = 0.0;
+}
+
+}  // namespace
+
+double Lookahead::frozen_centre() const {
+    return static_cast<double>(frozen_.tick - timeline_->now()) * parameters_.period + frozen_.offset;
+}
+
+Lookahead::NextStep Lookahead::next_step() const {
+    const Segment& s = seg(0);
+    const double period = parameters_.period;
+    NextStep n;
+    if (!frozen_.moving) {  // the start step of the front segment, as early as allowed
+        n.step = ramp_step(0, s.a);
+        n.kind = StepKind::start;
+        n.speed_after = s.a;
+        const double half = 0.5 * n.step.kernel.width();
+        n.centre = half;  // its kernel starts now
+        if (frozen_.any) {
+            const double stop = frozen_centre();
+            n.centre = std::max(n.centre, stop + rules_.spacing(frozen_.step.shape(), n.step.shape()));
+            n.centre = std::max(n.centre, stop + frozen_.rest);
+            // A sample lands on the corner while the tool rests: the kernel starts on or after the
+            // first tick at which the stop's kernel has ended.
+            const double settled = stop + 0.5 * frozen_.step.kernel.width();
+            n.centre = std::max(n.centre, std::ceil(settled / period - 1e-9) * period + half);
+        }
+        return n;
+    }
+    n.centre = frozen_centre() + s.x0;
+    if (s.p != s.a) {
+        n.step = ramp_step(0, s.p - s.a);
+        n.speed_after = s.p;
+    } else if (s.b != s.p) {
+        n.step = ramp_step(0, s.b - s.p);
+        n.speed_after = s.b;
+    } else if (count_ == 1 || s.kind == Kind::stop) {
+        n.step = stop_step(0);
+        n.kind = StepKind::stop;
+        n.speed_after = 0.0;
+        return n;
+    } else {
+        n.step = junction_step(0);
+        n.kind = StepKind::junction;
+        n.speed_after = s.next_a;
+        return n;
+    }
+    n.kind = StepKind::ramp;
+    return n;
+}
+
+bool Lookahead::final_for_start() const {
+    if (finished_ || count_ >= capacity_) return true;
+    if (seg(0).exit_end_limited) return false;
+    return count_ < 2 || seg(0).kind != Kind::dense || !seg(1).entry_end_limited;
+}
+
+void Lookahead::refresh_current_leg() {
+    if (!frozen_.moving || timeline_->idle() || count_ == 0) return;
+    const Segment& s = seg(0);
+    const NextStep n = next_step();
+    const double centre = frozen_centre();
+    Leg& leg = timeline_->back();
+    leg.tv = n.centre - centre;
+    const double length = frozen_.speed * leg.tv;
+    leg.delta = s.u * length;
+    leg.end = n.kind == StepKind::ramp ? AxisVector(s.start + s.u * (frozen_.consumed + length)) : s.end;
+    leg.last_of_block = n.kind != StepKind::ramp && !s.hold_split;  // a hold's split is not the block's end
+    leg.fall = (n.centre - 0.5 * n.step.kernel.width()) - (centre - 0.5 * frozen_.step.kernel.width());
+    leg.falling = n.step.kernel;
+    max_width_ = std::max(max_width_, n.step.kernel.width());
+    timeline_->widen(max_width_);
+}
+
+void Lookahead::pop_front(bool stop) {
+    Segment& s = seg(0);
+    const double fastest = std::max({s.a, s.p, s.b});
+    if (!s.hold_split) {  // a hold's stop is neither a corner nor a slow block
+        if (fastest < s.feed * (1.0 - 1e-9)) ++stats_.slowed;
+        if (fastest < s.feed * crawl_fraction) ++stats_.crawling;
+    }
+    if ((count_ > 1 || stop) && !s.hold_split) {  // the junction after it is decided: report it
+        CornerReport r;
+        r.line = s.line;
+        r.point = s.end;
+        r.beta = s.turn.beta;
+        r.speed_in = s.b;
+        r.speed_out = count_ > 1 && s.kind != Kind::stop ? s.next_a : 0.0;
+        r.epsilon = s.tolerance;
+        r.exact_stop = s.kind == Kind::stop || count_ == 1;
+        r.predicted_error = s.exact_stop || r.exact_stop ? 0.0 : s.predicted_error;
+        r.bound = r.exact_stop ? CornerBound::stop : s.bound;
+        r.axis = s.bound_axis;
+        if (count_ > 1) {  // the end of the program is not a corner
+            reports_[(report_head_ + report_count_) % reports_.size()] = r;
+            if (report_count_ < reports_.size()) ++report_count_;
+            else report_head_ = (report_head_ + 1) % reports_.size();
+        }
+    }
+    head_ = (head_ + 1) % segments_.size();
+    --count_;
+}
+
+bool Lookahead::take_report(CornerReport& report) {
+    if (report_count_ == 0) return false;
+    report = reports_[report_head_];
+    report_head_ = (report_head_ + 1) % reports_.size();
+    --report_count_;
+    return true;
+}
+
+void Lookahead::freeze(const NextStep& n) {
+    const double period = parameters_.period;
+    const Segment& front = seg(0);
+    // The new frozen step's centre, on the tick grid.
+    std::int64_t tick = timeline_->now();
+    double offset = n.centre;
+    normalise(tick, offset, period);
+    const AxisVector leg_start = n.kind == StepKind::ramp ? AxisVector(front.start + front.u * (frozen_.consumed + frozen_.speed * front.x0))
+                                                          : n.kind == StepKind::start ? front.start : front.end;
+    switch (n.kind) {
+        case StepKind::ramp: {
+            frozen_.consumed += frozen_.speed * front.x0;
+            // The segment's plan now starts at this step: its first leg is done.
+            Segment& s = seg(0);
+            if (s.p != s.a && s.b != s.p) {  // the cruise, then the ramp to b
+                s.a = s.p;
+                s.x0 = s.xp;
+                s.xp = 0.0;
+            } else {  // one leg left, at the speed this ramp reached
+                s.a = s.p = s.b;
+                s.x0 = s.x1;
+                s.xp = s.x1 = 0.0;
+            }
+            break;
+        }
+        case StepKind::junction:
+            pop_front(false);
+            frozen_.consumed = 0.0;
+            break;
+        case StepKind::stop:
+            frozen_.rest = front.rest;
+            pop_front(true);
+            frozen_.consumed = 0.0;
+            break;
+        case StepKind::start:
+            frozen_.consumed = 0.0;
+            break;
+    }
+    frozen_.step = n.step;
+    frozen_.tick = tick;
+    frozen_.offset = offset;
+    frozen_.any = true;
+    frozen_.speed = n.speed_after;
+    frozen_.junction = n.kind == StepKind::junction;
+    frozen_.moving = n.speed_after > 0.0 && count_ > 0;
+    if (!frozen_.moving) return;
+    const Segment& s = seg(0);
+    Leg leg;
+    leg.rising = n.step.kernel;
+    std::int64_t rise_tick = tick;
+    double rise_offset = offset - 0.5 * n.step.kernel.width();
+    normalise(rise_tick, rise_offset, period);
+    leg.rise_tick = rise_tick;
+    leg.rise_offset = rise_offset;
+    leg.line = s.line;
+    leg.type = s.type;
+    leg.end = leg_start;  // refresh_current_leg sets delta, tv, end and the falling edge
+    max_width_ = std::max(max_width_, n.step.kernel.width());
+    timeline_->widen(max_width_);
+    timeline_->push(leg);
+    refresh_current_leg();
+}
+
+void Lookahead::commit() {
+    const double period = parameters_.period;
+    for (;;) {
+        if (count_ == 0) return;
+        const NextStep n = next_step();
+        const double start = n.centre - 0.5 * n.step.kernel.width();
+        if (start > 1e-9 * period) {
+            if (n.kind != StepKind::start) waiting_since_ = -1;
+            return;
+        }
+        if (n.kind == StepKind::start) {
+            if (held_) return;
+            if (waiting_since_ < 0) waiting_since_ = timeline_->now();
+            const bool stalled = static_cast<double>(timeline_->now() - waiting_since_) * period >= parameters_.start_wait;
+            if (!final_for_start() && !stalled) return;
+            waiting_since_ = -1;
+        }
+        freeze(n);
+    }
+}
+
+// ---- Checking a plan ---------------------------------------------------------------------------
+
+void Lookahead::build_legs(std::size_t first) {
+    legs_.clear();
+    // Times in seconds from the timeline's now. Segment 0 starts at the frozen step (moving) or
+    // at its start step.
+    double t = frozen_.moving ? frozen_centre() : next_step().centre;
+    for (std::size_t i = 0; i < first; ++i) {
+        const Segment& s = seg(i);
+        t += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
+    }
+    if (first == 0)
+        for (std::size_t k = 0; k < timeline_->size(); ++k) {
+            if (frozen_.moving && k + 1 == timeline_->size()) break;  // the current leg: from the plan below
+            const Leg& leg = timeline_->at(k);
+            TimedLeg tl;
+            tl.delta = leg.delta;
+            tl.tv = leg.tv;
+            tl.rise = -timeline_->local_time(leg, timeline_->now());
+            tl.fall = leg.fall;
+            tl.rising = leg.rising;
+            tl.falling = leg.falling;
+            legs_.push_back(tl);
+        }
+    for (std::size_t i = first; i < count_; ++i) {
+        const Segment& s = seg(i);
+        enter_[i] = t;
+        Step step = entry_step(i);
+        double centre = t, speed = s.a;
+        // The leg from the current step to the next, at the current speed.
+        auto leg_to = [&](const Step& next, double next_centre) {
+            if (speed > 0.0 && next_centre > centre) {
+                TimedLeg tl;
+                tl.tv = next_centre - centre;
+                tl.delta = s.u * (speed * tl.tv);
+                tl.rise = centre - 0.5 * step.kernel.width();
+                tl.fall = (next_centre - 0.5 * next.kernel.width()) - tl.rise;
+                tl.rising = step.kernel;
+                tl.falling = next.kernel;
+                legs_.push_back(tl);
+            }
+            step = next;
+            centre = next_centre;
+        };
+        if (s.p != s.a) {
+            leg_to(ramp_step(i, s.p - s.a), t + s.x0);
+            speed = s.p;
+        }
+        if (s.b != s.p) {
+            leg_to(ramp_step(i, s.b - s.p), t + s.x0 + s.xp);
+            speed = s.b;
+        }
+        const bool stop = i + 1 == count_ || s.kind == Kind::stop;
+        leg_to(stop ? stop_step(i) : junction_step(i), t + s.x0 + s.xp + s.x1);
+        leg_of_[i] = legs_.empty() ? 0 : legs_.size() - 1;
+        when_[i] = centre;
+        t = centre + (stop ? s.rest : 0.0);
+    }
+    index_legs(legs_);
+}
+
+bool Lookahead::check(std::size_t first, std::size_t* bad) {
+    // Context: segments before `first` whose kernels may still reach it.
+    std::size_t from = first;
+    double span = 0.0;
+    while (from > 0 && span < 2.0 * max_width_ + rules_.t2) {
+        --from;
+        const Segment& s = seg(from);
+        span += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
+    }
+    // A block its legs do not cover: lower the corner it is entered from.
+    for (std::size_t i = first; i < count_; ++i) {
+        if (!seg(i).unfit) continue;
+        if (i > 0 && seg(i - 1).kind != Kind::stop) {
+            excess_ = 0.0;
+            *bad = i - 1;
+            return false;
+        }
+        ++stats_.unfit;  // entered from the motion under way or from rest: a defect
+    }
+    build_legs(from);
+    double end = enter_[first];
+    for (const TimedLeg& leg : legs_) {
+        end = std::max(end, leg.finish());
+        max_width_ = std::max({max_width_, leg.rising.width(), leg.falling.width()});
+    }
+    // What ran before now is done (and retired legs are gone from the timeline).
+    const double begin = std::max(enter_[first] - max_width_, 0.0);
+    const LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
+    excess_ = 0.0;
+    if (!limits.ok) {  // lower the corner nearest to where it happened
+        std::size_t nearest = count_;
+        double distance = infinity;
+        for (std::size_t i = from; i + 1 < count_; ++i) {
+            if (seg(i).kind == Kind::stop) continue;
+            const double d = std::abs(when_[i] - limits.time);
+            if (d < distance) distance = d, nearest = i;
+        }
+        *bad = nearest;
+        return false;
+    }
+    for (std::size_t i = std::max(from, first > 0 ? first - 1 : 0); i + 1 < count_; ++i) {
+        Segment& s = seg(i);
+        if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
+        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
+            s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period);
+        } else {
+            s.predicted_error = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period).distance;
+        }
+        const double epsilon = s.tolerance;
+        excess_ = s.predicted_error / epsilon;
+        if (s.predicted_error > epsilon) {
+            *bad = i;
+            return false;
+        }
+    }
+    return true;
+}
+
+void Lookahead::replan(std::size_t first) {
+    if (held_ && frozen_.moving && !hold_stop_placed()) {
+        place_hold_stop();
+        first = 0;
+    }
+    if (first >= count_) {
+        refresh_current_leg();
+        return;
+    }
+    // The accepted plan, restored if no change passes the check: [first, count) now, the rest on
+    // the first failure (untouched until then).
+    for (std::size_t i = first; i < count_; ++i) saved_[i] = seg(i);
+    bool saved_all = first == 0;
+    std::size_t from = first;
+    for (int attempt = 0;; ++attempt) {
+        forward(from);
+        std::size_t bad = count_;
+        if (check(from, &bad)) break;
+        ++stats_.checks_failed;
+        if (!saved_all) {
+            for (std::size_t i = 0; i < first; ++i) saved_[i] = seg(i);
+            saved_all = true;
+        }
+        if (attempt == max_check_attempts || bad + 1 >= count_) {
+            // Keep the plan accepted before (it stopped where the path ended then) and start the
+            // newest block from rest after it.
+            for (std::size_t i = 0; i + 1 < count_; ++i) seg(i) = saved_[i];
+            if (count_ >= 2) {
+                seg(count_ - 2).forced_stop = true;
+                junction_caps(count_ - 2);
+            }
+            backward(count_ - 1);
+            from = count_ >= 2 ? count_ - 2 : 0;
+            forward(from);
+            break;
+        }
+        // Lower the corner: the error grows about with the square of the speed.
+        Segment& j = seg(bad);
+        double factor = check_backoff;
+        if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
+        j.learned_cap = std::min(j.learned_cap, factor * std::max(j.b, j.next_a));
+        from = std::min({from, bad, backward(bad)});
+    }
+    // What bounded each junction the passes went over (for the report).
+    for (std::size_t i = from; i + 1 < count_; ++i) {
+        Segment& s = seg(i);
+        s.bound_axis = -1;
+        if (s.kind == Kind::stop) {
+            s.bound = CornerBound::stop;
+            continue;
+        }
+        const double c = std::max(s.b, s.next_a);
+        const double feed = std::min(target(i), target(i + 1));
+        if (c >= feed * (1.0 - 1e-9)) s.bound = CornerBound::feed;
+        else if (c >= s.learned_cap * (1.0 - 1e-9)) s.bound = CornerBound::checked;
+        else if (s.kind == Kind::corner && c >= s.corner_cap * (1.0 - 1e-9)) s.bound = s.cap_bound;
+        else if (s.kind == Kind::dense && c >= s.exit_max * (1.0 - 1e-9)) s.bound = CornerBound::room;
+        else s.bound = CornerBound::lookahead;
+        double most = 0.0;
+        for (int a = 0; a < limits_.axes; ++a) {
+            const double acc = limits_.axis[a].max_acceleration;
+            if (acc > 0.0 && std::abs(s.turn.du[a]) / acc > most) most = std::abs(s.turn.du[a]) / acc, s.bound_axis = a;
+        }
+    }
+    refresh_current_leg();
+}
+
+}  // namespace firtp
