@@ -1,5 +1,8 @@
 #include <firtp/junction.hpp>
 
+#include <firtp/kernel.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -41,7 +44,21 @@ double corner_speed(double alpha, double t2, double s, double epsilon) {
 }
 
 double chord_margin(double acceleration, double jerk, double period) {
-    return (acceleration + jerk * period) * period * period / 8.0;
+    return (acceleration + std::min(jerk * period, 2.0 * acceleration)) * period * period / 8.0;
+}
+
+double sampled_corner_speed(double alpha, double t2, double s, double du, double jerk, double period, double epsilon) {
+    double hi = corner_speed(alpha, t2, s, epsilon);  // without the chords: an upper bound
+    if (!std::isfinite(hi) || !(hi > 0.0)) return hi;
+    auto error = [&](double v) {
+        const double t1 = v * alpha;
+        const double peak = t1 > 0.0 ? v * du / std::max(t1, t2) : 0.0;  // the step's largest acceleration
+        return 2.0 * s * v * two_stage(t1, t2).lead() + chord_margin(peak, jerk, period);
+    };
+    if (error(hi) <= epsilon) return hi;
+    double lo = 0.0;  // both terms grow with v
+    for (int i = 0; i < 50 && hi - lo > 1e-12 * hi; ++i) (error(0.5 * (lo + hi)) <= epsilon ? lo : hi) = 0.5 * (lo + hi);
+    return lo;
 }
 
 }  // namespace firtp

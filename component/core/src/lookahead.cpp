@@ -113,8 +113,9 @@ Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
     for (int i = 0; i < limits_.axes; ++i) {
         const AxisLimits& l = limits_.axis[i];
         if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
+        // Without a tolerance the swing from -h to +h needs no more than the sparse jerk time.
         const double h = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
-                                                : l.max_acceleration;
+                                                : 0.5 * l.max_acceleration;
         r.cap[i] = h;
         r.t2 = std::max(r.t2, 2.0 * h / l.max_jerk);
     }
@@ -158,6 +159,15 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
     const Segment& prev = seg(i - 1);
     return {a * prev.turn_alpha, unit(prev.turn.du), prev.junction.t2};  // the corner, one speed both sides
+}
+
+double Lookahead::entry_width(std::size_t i, double a) const {
+    const Segment& s = seg(i);
+    if (i == 0 && frozen_.moving) return frozen_.step.kernel.width();
+    if (entry_is_stop(i)) return a * s.alpha + s.regime.t2;
+    const Segment& prev = seg(i - 1);
+    if (prev.kind == Kind::dense) return box(a * s.u - prev.b * prev.u, prev.junction) + prev.junction.t2;
+    return a * prev.turn_alpha + prev.junction.t2;
 }
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
@@ -204,7 +214,8 @@ double Lookahead::dense_estimate(std::size_t i) const {
         if (!(alpha > 0.0)) continue;
         v = std::min(v, std::sqrt(std::min(seg_length(j), seg_length(j + 1)) / alpha));
         if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance))
-            v = std::min(v, corner_speed(alpha, r.t2, s.turn.s, s.tolerance));
+            v = std::min(v, sampled_corner_speed(alpha, r.t2, s.turn.s, s.turn.du.norm(), jerk_norm_, parameters_.period,
+                                                 s.tolerance));
     }
     return v;
 }
@@ -214,8 +225,13 @@ void Lookahead::classify(std::size_t i) {
     if (i == 0 && frozen_.moving) return;  // under way: it stays what it was planned as
     const bool entry_smooth = i == 0 || seg(i - 1).kind == Kind::stop || smooth(i - 1);
     const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || smooth(i);
-    s.dense = s.short_block && ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
-    s.regime = s.dense ? dense_regime(s.tolerance) : sparse_;
+    // Dense: inside one dense kernel at its feed (several blocks share a window); a longer block
+    // held at one speed would crawl through its whole length behind a slow junction.
+    const Regime dense = dense_regime(s.tolerance);
+    const bool in_window = s.length < s.feed_max * (dense.t2 + s.feed_max * box(s.u, dense));
+    s.dense = s.short_block && in_window && !s.sparse_only &&
+              ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
+    s.regime = s.dense ? dense : sparse_;
     s.alpha = box(s.u, s.regime);
 }
 
@@ -240,9 +256,8 @@ void Lookahead::junction_caps(std::size_t i) {
     if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
         double epsilon = s.tolerance;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
-        const double height = s.turn_alpha > 0.0 ? s.turn.du.norm() / s.turn_alpha : 0.0;
-        epsilon = epsilon * (1.0 - 1e-6) - chord_margin(height, jerk_norm_, parameters_.period);  // rounding: to spare
-        s.corner_cap = corner_speed(s.turn_alpha, s.junction.t2, s.turn.s, std::max(epsilon, 0.0));
+        s.corner_cap = sampled_corner_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), jerk_norm_,
+                                            parameters_.period, epsilon * (1.0 - 1e-6));  // rounding: to spare
         s.cap_bound = CornerBound::tolerance;
     }
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
@@ -251,6 +266,12 @@ void Lookahead::junction_caps(std::size_t i) {
                 const double room = room_cap(k, s.turn_alpha);
                 if (room < s.corner_cap) s.corner_cap = room, s.cap_bound = CornerBound::room;
             }
+    if (!(s.corner_cap > 0.0)) {  // no speed passes it: a stop
+        s.kind = Kind::stop;
+        s.cap_bound = CornerBound::stop;
+        s.junction = s.regime;
+        s.turn_alpha = 0.0;
+    }
 }
 
 void Lookahead::link(std::size_t i) {
@@ -308,6 +329,8 @@ bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
     const double t1 = box(dv, s.junction);
     const double leg_s = b > 0.0 ? seg_length(i) / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
     if (t1 > leg_s || t1 > leg_n) return false;
+    // Kernels start in the steps' order: a step wider than the one entering the block waits.
+    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width(i, b))) return false;
     if (s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) return true;
     const AxisVector m = unit(s.u + n.u);
     const double inward = (dv - m * dv.dot(m)).norm();
@@ -315,7 +338,7 @@ bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
     double estimate = inward * two_stage(t1, t2).lead();
     const double legs = 0.5 * (std::isfinite(leg_s) ? leg_s : 0.0) + 0.5 * (std::isfinite(leg_n) ? leg_n : 0.0);
     if (legs > 0.0) estimate += inward / legs * t2 * t2 / 24.0;
-    estimate += chord_margin(t1 > 0.0 ? dv.norm() / t1 : 0.0, jerk_norm_, parameters_.period);
+    estimate += chord_margin(t1 > 0.0 ? dv.norm() / std::max(t1, t2) : 0.0, jerk_norm_, parameters_.period);
     double epsilon = s.tolerance;
     if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
     return estimate <= epsilon;
@@ -454,8 +477,16 @@ void Lookahead::forward(std::size_t from) {
             s.enter = frozen_.moving ? static_cast<double>(frozen_.tick) * period + frozen_.offset
                                      : static_cast<double>(timeline_->now()) * period + next_step().centre;
         } else {
-            const Segment& prev = seg(i - 1);
-            s.enter = prev.enter + prev.x0 + prev.xp + prev.x1 + (prev.kind == Kind::stop ? prev.rest : 0.0);
+            Segment& prev = seg(i - 1);
+            const double exit = prev.enter + prev.x0 + prev.xp + prev.x1;
+            if (prev.kind == Kind::stop) {
+                // As next_step() starts it: a sample lands on the corner while the tool rests, so
+                // the start's kernel begins on the first sample after the stop's kernel has ended.
+                const double settled = exit + 0.5 * stop_step(i - 1).kernel.width();
+                const double first_sample = std::ceil(settled / period - 1e-9) * period;
+                prev.rest = std::max(prev.rest, first_sample + 0.5 * entry_step(i).kernel.width() - exit);
+            }
+            s.enter = exit + (prev.kind == Kind::stop ? prev.rest : 0.0);
         }
     }
 }

@@ -15,6 +15,7 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int max_check_attempts = 12;
 constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
 constexpr double crawl_fraction = 1e-3;
+constexpr double error_margin = 1e-6;  // of epsilon: what the samples round to may differ a little
 constexpr std::size_t report_ring = 64;
 
 void normalise(std::int64_t& tick, double& offset, double period) {
@@ -306,7 +307,11 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     }
     // What ran before now is done (and retired legs are gone from the timeline).
     const double begin = std::max(enter_[first] - max_width_, 0.0);
-    const LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
+    LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
+    // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
+    // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
+    for (std::size_t k = 0; k < legs_.size() && limits.ok; ++k)
+        if (legs_[k].fall < -1e-12) limits = {false, legs_[k].fall_centre, 0, 0, 0.0};
     excess_ = 0.0;
     if (!limits.ok) {  // lower the corner nearest to where it happened
         std::size_t nearest = count_;
@@ -319,15 +324,17 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         *bad = nearest;
         return false;
     }
-    for (std::size_t i = std::max(from, first > 0 ? first - 1 : 0); i + 1 < count_; ++i) {
+    // Every corner the changed motion can reach: within the widest kernel of its first change.
+    for (std::size_t i = from; i + 1 < count_; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
+        if (when_[i] < enter_[first] - max_width_ - 4.0 * parameters_.period) continue;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period);
         } else {
             s.predicted_error = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period).distance;
         }
-        const double epsilon = s.tolerance;
+        const double epsilon = s.tolerance * (1.0 - error_margin);
         excess_ = s.predicted_error / epsilon;
         if (s.predicted_error > epsilon) {
             *bad = i;
@@ -346,10 +353,12 @@ void Lookahead::replan(std::size_t first) {
         refresh_current_leg();
         return;
     }
-    // The accepted plan, restored if no change passes the check: [first, count) now, the rest on
-    // the first failure (untouched until then).
-    for (std::size_t i = first; i < count_; ++i) saved_[i] = seg(i);
-    bool saved_all = first == 0;
+    // The accepted plan, restored if no change passes the check: [first - 1, count) now (planning
+    // segment `first` sets the junction fields of the one before), the rest on the first failure
+    // (untouched until then).
+    const std::size_t kept = first > 0 ? first - 1 : 0;
+    for (std::size_t i = kept; i < count_; ++i) saved_[i] = seg(i);
+    bool saved_all = kept == 0;
     std::size_t from = first;
     for (int attempt = 0;; ++attempt) {
         forward(from);
@@ -357,7 +366,7 @@ void Lookahead::replan(std::size_t first) {
         if (check(from, &bad)) break;
         ++stats_.checks_failed;
         if (!saved_all) {
-            for (std::size_t i = 0; i < first; ++i) saved_[i] = seg(i);
+            for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
             saved_all = true;
         }
         if (attempt == max_check_attempts || bad + 1 >= count_) {
@@ -365,8 +374,11 @@ void Lookahead::replan(std::size_t first) {
             // newest block from rest after it.
             for (std::size_t i = 0; i + 1 < count_; ++i) seg(i) = saved_[i];
             if (count_ >= 2) {
+                // It was the last block: as it was classified then (adding the newest changed that).
                 seg(count_ - 2).forced_stop = true;
                 junction_caps(count_ - 2);
+                classify(count_ - 2);
+                if (count_ >= 3) junction_caps(count_ - 3);
             }
             backward(count_ - 1);
             from = count_ >= 2 ? count_ - 2 : 0;
@@ -378,6 +390,15 @@ void Lookahead::replan(std::size_t first) {
         double factor = check_backoff;
         if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
         j.learned_cap = std::min(j.learned_cap, factor * std::max(j.b, j.next_a));
+        // A dense block keeps one speed: pinned to a junction this slow it would crawl. It ramps
+        // on its own instead (sparse).
+        for (std::size_t k : {bad, bad + 1})
+            if (k < count_ && seg(k).dense && !(k == 0 && frozen_.moving) && j.learned_cap < 0.5 * sparse_estimate(k)) {
+                seg(k).sparse_only = true;
+                classify(k);
+                if (k > 0) junction_caps(k - 1);
+                if (k + 1 < count_) junction_caps(k);
+            }
         from = std::min({from, bad, backward(bad)});
     }
     // What bounded each junction the passes went over (for the report).

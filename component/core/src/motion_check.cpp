@@ -92,6 +92,7 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
     for (const TimedLeg& leg : legs) {
+        if (!(leg.tv > 0.0)) continue;  // no time, no motion
         const AxisVector dv = leg.delta / leg.tv;
         const double starts[2] = {leg.rise, leg.rise + leg.fall};
         const Kernel* kernels[2] = {&leg.rising, &leg.falling};
@@ -175,6 +176,7 @@ AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, dou
     }
     for (std::size_t k = lo; k < hi; ++k) {
         const TimedLeg& leg = legs[k];
+        if (!(leg.tv > 0.0)) continue;
         const StepSample up = leg.rising.step(t - leg.rise);
         const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
         const double p = (up.position - down.position) / leg.tv - (k <= corner ? 1.0 : 0.0);

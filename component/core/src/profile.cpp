@@ -31,8 +31,11 @@ bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y) const {
 }
 
 double SpacingRules::spacing(const StepShape& x, const StepShape& y) const {
-    if (x.box <= 0.0 && x.direction.isZero()) return 0.5 * y.box;  // no step
-    if (y.box <= 0.0 && y.direction.isZero()) return 0.5 * x.box;
+    // Kernels start in the steps' order (each freezes when its kernel starts): a wider y waits
+    // for half the difference.
+    const double in_order = 0.5 * ((y.box + y.t2) - (x.box + x.t2));
+    if (x.box <= 0.0 && x.direction.isZero()) return std::max(0.5 * y.box, in_order);  // no step
+    if (y.box <= 0.0 && y.direction.isZero()) return std::max(0.5 * x.box, in_order);
     if (x.t2 != y.t2) return 0.5 * (x.box + x.t2 + y.box + y.t2);
     return 0.5 * (x.box + y.box) + (x.t2 == t2 && needs_gap(x.direction, y.direction) ? t2 : 0.0);
 }
@@ -69,7 +72,7 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
         x[0] = reserved(0, block.in_reserve);
         x[n - 1] = reserved(n - 1, block.out_reserve);
     }
-    x[0] = std::max(x[0], block.entry_elapsed + 0.5 * (steps[1].box + rules.t2));
+    x[0] = std::max(x[0], block.entry_elapsed + 0.5 * (steps[1].box + steps[1].t2));
     // Steps further apart than neighbours: boxes of opposite sign on an axis keep T2 between them.
     for (int i = 0; i + 2 <= n; ++i)
         for (int k = i + 2; k <= n; ++k) {

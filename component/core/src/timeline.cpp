@@ -3,6 +3,7 @@
 namespace firtp {
 
 StepSample Leg::progress(double t) const {
+    if (!(tv > 0.0)) return {};  // a leg of no time (two steps at one instant) moves nothing
     const StepSample up = rising.step(t);
     const StepSample down = falling.step(t - fall);
     return {(up.position - down.position) / tv, (up.velocity - down.velocity) / tv,

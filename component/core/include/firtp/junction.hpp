@@ -36,7 +36,12 @@ double corner_speed(double alpha, double t2, double s, double epsilon);
 
 // How far the path through the servo samples (straight between samples) can lie from the smooth
 // path, for an acceleration of at most `acceleration` changing by at most `jerk` per second:
-// (a + j T) T^2 / 8.
+// (a + j T) T^2 / 8, the change within a period at most 2 a (a step of a jerk-free axis). For the
+// closed-form caps; the exact check measures the chords themselves.
 double chord_margin(double acceleration, double jerk, double period);
+
+// corner_speed() with the chord margin of the corner step's own peak acceleration,
+// V |du| / max(V alpha, t2), added to the error (|du| = `du`, |jerk| at most `jerk`).
+double sampled_corner_speed(double alpha, double t2, double s, double du, double jerk, double period, double epsilon);
 
 }  // namespace firtp

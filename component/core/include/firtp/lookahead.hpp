@@ -90,6 +90,7 @@ private:
         double alpha = 0.0;      // T1 per unit of speed change along u (in its regime)
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
+        bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
         Regime regime;           // of its own steps (start, stop, ramps)
         bool exact_stop = false;
         bool forced_stop = false;  // no checked plan passed it: the tool stops there
@@ -171,6 +172,7 @@ private:
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
     StepShape exit_shape(std::size_t i, double b) const;
+    double entry_width(std::size_t i, double a) const;  // kernel width of the step entering segment i at a
 
     // Geometry and caps.
     void link(std::size_t i);               // junction after segment i: turn, kind, caps

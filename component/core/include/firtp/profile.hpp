@@ -32,7 +32,8 @@ struct SpacingRules {
     double t2 = 0.0;  // the common jerk time
 
     // Least distance in command time between the centres of consecutive steps x then y. Steps
-    // with different jerk stages do not share the moving average: their kernels stay apart.
+    // with different jerk stages do not share the moving average: their kernels stay apart. Always
+    // at least half the difference of their widths: kernels start in the steps' order.
     double spacing(const StepShape& x, const StepShape& y) const;
     // True when boxes in directions x and y need a jerk gap of T2 between them (opposite signs on
     // an axis whose accelerations at the limit would swing by more than J T2).

@@ -1,0 +1,120 @@
+// Seeded randomized suite of smoothing at the limits (support/random_machine.hpp: random machines
+// with per-axis v, a, j, and random programs). Measured on the samples, never asserted:
+// - every blended corner within its tolerance (the path straight from sample to sample),
+// - axis velocity, acceleration and jerk within the limits, as the chain's values at the samples
+//   and as finite differences of the positions, at the period and at 1 ms,
+// - the end exactly on the last point, at rest, no NaN;
+// and from the planner: nothing refused, no leg plan that failed to cover its block.
+// FIRTP_RANDOM_SCALE multiplies the counts for soak runs (ctest -L soak).
+#include "support/random_machine.hpp"
+
+#include <firtp/measure.hpp>
+#include <firtp/trajectory.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+using namespace firtp;
+
+namespace {
+
+// Every `step`-th sample, as a slower servo would see the same motion.
+std::vector<AxisState> decimate(const std::vector<AxisState>& samples, std::size_t step) {
+    std::vector<AxisState> out;
+    for (std::size_t k = 0; k < samples.size(); k += step) out.push_back(samples[k]);
+    return out;
+}
+
+struct Worst {
+    double corner = 0.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0;
+    std::size_t programs = 0, blocks = 0, corners = 0;
+};
+
+void expect_within(const test::RandomCase& c, const Trajectory& t, Worst& worst) {
+    const PlannerParameters& p = c.parameters;
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    std::vector<const Block*> ending;
+    for (const Block& b : c.blocks)
+        if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target), ending.push_back(&b);
+    const Measured m = measure(t.samples, points, p.period);
+    ASSERT_TRUE(m.finite);
+    ASSERT_EQ(m.end_position, c.blocks.back().target);  // exact
+    ASSERT_EQ(t.samples.back().velocity, AxisVector::Zero());
+    ASSERT_EQ(m.corner_errors.size(), points.size() < 2 ? 0u : points.size() - 2);
+    for (std::size_t i = 0; i < m.corner_errors.size(); ++i) {
+        const Block& b = *ending[i];
+        const AxisVector in = points[i + 1] - points[i], out = points[i + 2] - points[i + 1];
+        if (b.termination != Termination::blend || in.normalized().dot(out.normalized()) > 1.0 - 1e-12) continue;
+        ASSERT_LE(m.corner_errors[i], b.tolerance) << "corner after line " << b.line;
+        worst.corner = std::max(worst.corner, m.corner_errors[i] / b.tolerance);
+        ++worst.corners;
+    }
+    // 1 ms differences too, where the period divides 1 ms.
+    const auto step = static_cast<std::size_t>(std::lround(0.001 / p.period));
+    const Measured ms = measure(decimate(t.samples, step), points, static_cast<double>(step) * p.period);
+    for (int a = 0; a < p.limits.axes; ++a) {
+        const AxisLimits& l = p.limits.axis[a];
+        const double slack = 1.0 + 1e-6;
+        for (const AxisState& s : t.samples) {
+            ASSERT_LE(std::abs(s.velocity[a]), l.max_velocity * slack) << "axis " << a << " at " << s.time;
+            ASSERT_LE(std::abs(s.acceleration[a]), l.max_acceleration * slack) << "axis " << a << " at " << s.time;
+            if (l.max_jerk > 0.0) {
+                ASSERT_LE(std::abs(s.jerk[a]), l.max_jerk * slack) << "axis " << a << " at " << s.time;
+            }
+        }
+        for (const Measured* d : {&m, &ms}) {
+            ASSERT_LE(d->max_velocity[a], l.max_velocity * slack) << "axis " << a << (d == &m ? " per period" : " per ms");
+            ASSERT_LE(d->max_acceleration[a], l.max_acceleration * slack) << "axis " << a;
+            if (l.max_jerk > 0.0) {
+                ASSERT_LE(d->max_jerk[a], l.max_jerk * slack) << "axis " << a;
+            }
+        }
+        worst.velocity = std::max(worst.velocity, m.max_velocity[a] / l.max_velocity);
+        worst.acceleration = std::max(worst.acceleration, m.max_acceleration[a] / l.max_acceleration);
+        if (l.max_jerk > 0.0) worst.jerk = std::max(worst.jerk, m.max_jerk[a] / l.max_jerk);
+    }
+}
+
+void check_programs(std::uint64_t seed, int count, ToleranceMeaning meaning) {
+    seed += test::random_seed_offset();
+    std::mt19937_64 rng(seed);
+    Worst worst;
+    for (int k = 0; k < test::random_scaled(count); ++k) {
+        test::RandomCase c = test::random_case(rng);
+        c.parameters.tolerance_meaning = meaning;
+        if (meaning == ToleranceMeaning::contour)  // one tolerance: the measured largest is against it
+            for (Block& b : c.blocks) b.tolerance = c.blocks.front().tolerance;
+        SCOPED_TRACE("seed " + std::to_string(seed) + " program " + std::to_string(k));
+        Trajectory t;
+        try {
+            t = plan_trajectory(c.parameters, AxisVector::Zero(), c.blocks);
+        } catch (const std::invalid_argument& refused) {
+            FAIL() << refused.what();
+        }
+        EXPECT_EQ(t.stats.refused, 0u);
+        EXPECT_EQ(t.stats.unfit, 0u);
+        if (meaning == ToleranceMeaning::corner_point) {
+            expect_within(c, t, worst);
+        } else {
+            std::vector<AxisVector> points{AxisVector::Zero()};
+            for (const Block& b : c.blocks) points.push_back(b.target);
+            const Measured m = measure(t.samples, points, c.parameters.period);
+            ASSERT_EQ(m.end_position, c.blocks.back().target);
+            ASSERT_LE(m.max_contour_error, c.blocks.front().tolerance * (1 + 1e-6) + 1e-9);
+        }
+        ASSERT_FALSE(::testing::Test::HasFailure());
+        ++worst.programs;
+        worst.blocks += c.blocks.size();
+    }
+    std::printf("%zu programs, %zu blocks, %zu corners: worst corner error / tolerance %.4f, |v| %.4f, |a| %.4f, "
+                "|j| %.4f of the limits (finite differences)\n",
+                worst.programs, worst.blocks, worst.corners, worst.corner, worst.velocity, worst.acceleration, worst.jerk);
+}
+
+}  // namespace
+
+TEST(RandomMachines, CornersLimitsAndEndHoldOnEverySample) { check_programs(21, 300, ToleranceMeaning::corner_point); }
+
+TEST(RandomMachines, ContourToleranceHolds) { check_programs(22, 100, ToleranceMeaning::contour); }

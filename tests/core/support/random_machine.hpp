@@ -1,0 +1,136 @@
+// Random machines and programs for the suites of smoothing at the limits (the default mode).
+//
+// Machines: 2 to 5 axes, each with its own velocity (log-uniform 50-600 units/s), acceleration
+// (300-30000) and jerk (1e4-1e8, one axis in ten without a jerk limit), periods of 0.25-1 ms,
+// highest overrides 1, 1.2 or 2. Programs: polylines with sharp and shallow corners, reversals,
+// collinear runs, zero-length blocks, long and short ones, runs of short chords along a circle
+// (CAM output, arcs), some exact stops and traverses, tolerances 1 um to 1 mm. Each program is drawn
+// again until segments that are not neighbours stay apart (the measurement follows the path).
+#pragma once
+
+#include "separation.hpp"
+
+#include <firtp/parameters.hpp>
+#include <firtp/types.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace firtp::test {
+
+struct RandomCase {
+    PlannerParameters parameters;
+    std::vector<Block> blocks;
+};
+
+inline double log_uniform(std::mt19937_64& rng, double lo, double hi) {
+    return lo * std::pow(hi / lo, std::uniform_real_distribution<double>(0.0, 1.0)(rng));
+}
+
+inline PlannerParameters random_machine(std::mt19937_64& rng) {
+    PlannerParameters p;
+    p.limits.axes = 2 + static_cast<int>(rng() % 4);
+    for (int a = 0; a < p.limits.axes; ++a) {
+        AxisLimits& l = p.limits.axis[a];
+        l.max_velocity = log_uniform(rng, 50, 600);
+        l.max_acceleration = log_uniform(rng, 300, 30000);
+        l.max_jerk = rng() % 10 == 0 ? 0.0 : log_uniform(rng, 1e4, 1e8);
+    }
+    p.period = std::array{0.001, 0.0005, 0.00025}[rng() % 3];
+    p.max_rate = std::array{1.0, 1.2, 2.0}[rng() % 3];
+    p.queue_capacity = std::array<std::size_t, 3>{16, 64, 256}[rng() % 3];
+    return p;
+}
+
+// Directions in the machine's axes (the first three mostly).
+inline AxisVector random_direction(std::mt19937_64& rng, int axes) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    AxisVector d = AxisVector::Zero();
+    for (int a = 0; a < axes; ++a) d[a] = unit(rng) * (a < 3 ? 1.0 : 0.3);
+    if (d.norm() < 1e-3) d[0] = 1.0;
+    return d.normalized();
+}
+
+inline std::vector<Block> random_blocks(std::mt19937_64& rng, const PlannerParameters& p) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int axes = p.limits.axes;
+    std::vector<Block> blocks;
+    AxisVector at = AxisVector::Zero(), direction = random_direction(rng, axes);
+    const double tolerance = log_uniform(rng, 0.001, 1.0);
+    const double feed = log_uniform(rng, 5, 600);
+    const int n = 2 + static_cast<int>(rng() % 24);
+    auto push = [&](const AxisVector& target, double f) {
+        Block b;
+        b.target = target;
+        b.feed = f;
+        b.tolerance = rng() % 4 == 0 ? log_uniform(rng, 0.001, 1.0) : tolerance;
+        b.termination = rng() % 12 == 0 ? Termination::exact_stop : Termination::blend;
+        b.type = rng() % 15 == 0 ? MotionType::traverse : MotionType::feed;
+        b.line = static_cast<std::int64_t>(blocks.size()) + 1;
+        blocks.push_back(b);
+    };
+    while (static_cast<int>(blocks.size()) < n) {
+        const int kind = static_cast<int>(rng() % 10);
+        const double f = rng() % 3 == 0 ? log_uniform(rng, 5, 600) : feed;
+        if (kind == 0) {  // a run of chords along a circle in the X Y plane
+            const double radius = log_uniform(rng, 0.5, 50), chord = log_uniform(rng, 0.02, 2.0);
+            const double step = 2.0 * std::asin(std::min(1.0, chord / (2.0 * radius)));
+            const int count = 3 + static_cast<int>(rng() % 30);
+            const double sense = rng() % 2 ? 1.0 : -1.0;
+            const double heading = std::atan2(direction[1], direction[0]);
+            const double centre_angle = heading + sense * std::numbers::pi / 2;
+            const AxisVector centre = at + radius * (AxisVector() << std::cos(centre_angle), std::sin(centre_angle), 0, 0, 0, 0, 0, 0, 0).finished();
+            double angle = centre_angle + std::numbers::pi;
+            for (int i = 0; i < count; ++i) {
+                angle += sense * step;
+                AxisVector next = at;
+                next[0] = centre[0] + radius * std::cos(angle);
+                next[1] = centre[1] + radius * std::sin(angle);
+                direction = (next - at).normalized();
+                at = next;
+                push(at, f);
+            }
+            continue;
+        }
+        const double length = kind == 1 ? 0.0 : rng() % 3 == 0 ? log_uniform(rng, 0.01, 1.0) : log_uniform(rng, 1.0, 60.0);
+        if (kind == 2) direction = -direction;                                                        // reversal
+        else if (kind == 3) {}                                                                        // collinear
+        else if (kind == 4) direction = (direction + 0.05 * random_direction(rng, axes)).normalized();  // shallow
+        else direction = random_direction(rng, axes);
+        at += direction * length;
+        push(at, f);
+    }
+    return blocks;
+}
+
+// Programs whose path folds back onto itself are drawn again.
+inline RandomCase random_case(std::mt19937_64& rng) {
+    for (;;) {
+        RandomCase c;
+        c.parameters = random_machine(rng);
+        c.blocks = random_blocks(rng, c.parameters);
+        std::vector<AxisVector> points{AxisVector::Zero()};
+        double tolerance = 0.0, fastest = 0.0;
+        for (const Block& b : c.blocks) {
+            if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target);
+            tolerance = std::max(tolerance, b.tolerance);
+            fastest = std::max(fastest, b.feed * c.parameters.max_rate);
+        }
+        if (well_separated(points, 3 * tolerance + fastest * c.parameters.period)) return c;
+    }
+}
+
+// Soak runs: FIRTP_RANDOM_SEED shifts every seed, FIRTP_RANDOM_SCALE multiplies every count.
+inline std::uint64_t random_seed_offset() {
+    const char* v = std::getenv("FIRTP_RANDOM_SEED");
+    return v ? std::strtoull(v, nullptr, 10) : 0;
+}
+inline int random_scaled(int count) {
+    const char* v = std::getenv("FIRTP_RANDOM_SCALE");
+    return v ? count * std::max(1, std::atoi(v)) : count;
+}
+
+}  // namespace firtp::test
