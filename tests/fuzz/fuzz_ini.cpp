@@ -1,6 +1,6 @@
 // libFuzzer target: the INI reader and the machine it describes (IniFile::parse, load_machine).
 // Any input either gives a ConfigError or a machine the planner and the component accept: valid
-// filter times, rate settings, a positive period, finite limits; ComponentCore takes it.
+// filter times (or, at the limits, an acceleration limit), rate settings, a positive period, finite limits; ComponentCore takes it.
 #include <component_core.hpp>
 #include <firtp/fir_chain.hpp>
 #include <firtp/ini.hpp>
@@ -18,13 +18,20 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     firtp::MachineConfig m;
+    firtp::PlannerParameters p;
     try {
         m = firtp::load_machine(firtp::IniFile::parse(text, "fuzz.ini"));
+        p = m.planner_parameters();
     } catch (const firtp::ConfigError&) {
         return 0;  // refused with file:line: [SECTION]KEY: reason
     }
-    const firtp::PlannerParameters p = m.planner_parameters();
-    require(*firtp::validate(p.filters) == '\0');
+    if (p.fixed_chain) {
+        require(*firtp::validate(p.filters) == '\0');
+    } else {
+        bool any = false;  // smoothing at the limits needs one acceleration limit
+        for (int a = 0; a < p.limits.axes; ++a) any = any || p.limits.axis[a].max_acceleration > 0.0;
+        require(any);
+    }
     require(*firtp::validate_rate(p) == '\0');
     require(std::isfinite(p.period) && p.period > 0.0);
     require(m.default_tolerance > 0.0 && m.arc_chord_tolerance > 0.0);

@@ -49,6 +49,7 @@ struct Ring {
 
 firtp::ComponentSettings settings() {
     firtp::ComponentSettings s;
+    s.planner.fixed_chain = true;  // the paper's chain: no machine limits needed
     s.planner.filters.stages = 2;
     s.planner.filters.T = {0.02, 0.01, 0.0, 0.0};
     s.planner.period = 0.001;

@@ -16,6 +16,8 @@ constexpr double reversal_sine = 1.0 - 1e-12;  // s = sin(beta / 2) this close t
 Turn make_turn(const AxisVector& u_in, const AxisVector& u_out, const MachineLimits& limits) {
     Turn t;
     t.du = u_out - u_in;
+    const double n = t.du.norm();
+    if (n > 0.0) t.direction = t.du / n;
     t.beta = 2.0 * std::atan2(t.du.norm(), (u_in + u_out).norm());
     t.s = std::sin(0.5 * t.beta);
     for (int i = 0; i < limits.axes; ++i) {
@@ -57,7 +59,7 @@ double sampled_corner_speed(double alpha, double t2, double s, double du, double
     };
     if (error(hi) <= epsilon) return hi;
     double lo = 0.0;  // both terms grow with v
-    for (int i = 0; i < 50 && hi - lo > 1e-12 * hi; ++i) (error(0.5 * (lo + hi)) <= epsilon ? lo : hi) = 0.5 * (lo + hi);
+    for (int i = 0; i < 50 && hi - lo > 1e-9 * hi; ++i) (error(0.5 * (lo + hi)) <= epsilon ? lo : hi) = 0.5 * (lo + hi);
     return lo;
 }
 

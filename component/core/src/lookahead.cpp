@@ -158,7 +158,7 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
     if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
     const Segment& prev = seg(i - 1);
-    return {a * prev.turn_alpha, unit(prev.turn.du), prev.junction.t2};  // the corner, one speed both sides
+    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2};  // the corner, one speed both sides
 }
 
 double Lookahead::entry_width(std::size_t i, double a) const {
@@ -173,7 +173,7 @@ double Lookahead::entry_width(std::size_t i, double a) const {
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
     if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2};  // the stop step
-    return {b * s.turn_alpha, unit(s.turn.du), s.junction.t2};
+    return {b * s.turn_alpha, s.turn.direction, s.junction.t2};
 }
 
 // ---- Geometry and caps -------------------------------------------------------------------------

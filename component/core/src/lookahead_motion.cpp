@@ -136,6 +136,7 @@ bool Lookahead::take_report(CornerReport& report) {
 }
 
 void Lookahead::freeze(const NextStep& n) {
+    next_known_ = false;
     const double period = parameters_.period;
     const Segment& front = seg(0);
     // The new frozen step's centre, on the tick grid.
@@ -202,20 +203,26 @@ void Lookahead::commit() {
     const double period = parameters_.period;
     for (;;) {
         if (count_ == 0) return;
-        const NextStep n = next_step();
-        const double start = n.centre - 0.5 * n.step.kernel.width();
-        if (start > 1e-9 * period) {
-            if (n.kind != StepKind::start) waiting_since_ = -1;
+        // The next step's kernel start is kept until the plan changes: most ticks end here.
+        const double now = static_cast<double>(timeline_->now()) * period;
+        if (!next_known_) {
+            const NextStep n = next_step();
+            next_start_ = now + n.centre - 0.5 * n.step.kernel.width();
+            next_is_start_ = n.kind == StepKind::start;
+            next_known_ = true;
+        }
+        if (next_start_ - now > 1e-9 * period) {
+            if (!next_is_start_) waiting_since_ = -1;
             return;
         }
-        if (n.kind == StepKind::start) {
+        if (next_is_start_) {
             if (held_) return;
             if (waiting_since_ < 0) waiting_since_ = timeline_->now();
             const bool stalled = static_cast<double>(timeline_->now() - waiting_since_) * period >= parameters_.start_wait;
             if (!final_for_start() && !stalled) return;
             waiting_since_ = -1;
         }
-        freeze(n);
+        freeze(next_step());
     }
 }
 
@@ -345,6 +352,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
 }
 
 void Lookahead::replan(std::size_t first) {
+    next_known_ = false;
     if (held_ && frozen_.moving && !hold_stop_placed()) {
         place_hold_stop();
         first = 0;

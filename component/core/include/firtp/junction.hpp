@@ -18,6 +18,7 @@ namespace firtp {
 
 struct Turn {
     AxisVector du = AxisVector::Zero();  // u_out - u_in
+    AxisVector direction = AxisVector::Zero();  // du / |du| (zero when straight on)
     double s = 0.0;                      // |du| / 2 = sin(beta / 2)
     double beta = 0.0;                   // change of direction, rad
     double alpha = 0.0;                  // T1 per unit of corner speed: max_a |du_a| / A_a, s/(unit/s)

@@ -227,6 +227,9 @@ private:
     bool held_ = false;
     bool finished_ = false;
     std::int64_t waiting_since_ = -1;  // tick the first step of a start began to wait for the look-ahead
+    bool next_known_ = false;          // next_start_ holds for the plan as it is
+    bool next_is_start_ = false;
+    double next_start_ = 0.0;          // the next step's kernel start, s on the timeline's clock
     double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
 
     std::size_t capacity_;           // blocks add() takes
