@@ -29,8 +29,8 @@ po::options_description machine_flags() {
          "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]MAX_LINEAR_VELOCITY, "
          "[AXIS_<L>]MAX_VELOCITY/MAX_ACCELERATION/MAX_JERK, [DISPLAY]MAX_FEED_OVERRIDE, [FIRTP]STAGES T1..T4 "
          "MODES TOLERANCE TOLERANCE_MEANING ARC_CHORD_TOLERANCE RATE_RESERVE MAX_PROGRAM_BLOCKS. Without it: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3, 1 ms period, "
-         "T1 = 60 ms, T2 = 50 ms, 0.05 mm tolerance")
-        ("t1", po::value<double>()->value_name("S"), "first FIR stage time T1 in seconds (overrides the machine)")
+         "every move smoothed at those limits, 0.05 mm tolerance")
+        ("t1", po::value<double>()->value_name("S"), "first FIR stage time T1 in seconds: the paper's fixed chain instead of smoothing at the limits")
         ("t2", po::value<double>()->value_name("S"), "second FIR stage time T2 in seconds (T2 <= T1)")
         ("tolerance", po::value<double>()->value_name("MM"),
          "corner tolerance in mm used by G64 without P (overrides [FIRTP]TOLERANCE)")

@@ -304,7 +304,11 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
             *bad = i - 1;
             return false;
         }
-        ++stats_.unfit;  // entered from the motion under way or from rest: a defect
+        if (i == 0 && frozen_.moving && !held_) {  // a new feed the motion under way cannot take
+            *bad = count_;
+            return false;
+        }
+        ++stats_.unfit;  // entered from rest: a defect
     }
     build_legs(from);
     double end = enter_[first];
@@ -373,6 +377,11 @@ void Lookahead::replan(std::size_t first) {
         std::size_t bad = count_;
         if (check(from, &bad)) break;
         ++stats_.checks_failed;
+        if (bad == count_) {  // keep the plan accepted before (the override applies from the next block)
+            for (std::size_t i = kept; i < count_; ++i) seg(i) = saved_[i];
+            refresh_current_leg();
+            return;
+        }
         if (!saved_all) {
             for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
             saved_all = true;
@@ -397,7 +406,13 @@ void Lookahead::replan(std::size_t first) {
         Segment& j = seg(bad);
         double factor = check_backoff;
         if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
-        j.learned_cap = std::min(j.learned_cap, factor * std::max(j.b, j.next_a));
+        const double lowered = factor * std::max(j.b, j.next_a);
+        if (lowered > 1e-6 * j.feed) {
+            j.learned_cap = std::min(j.learned_cap, lowered);
+        } else {  // not even a crawl passes it: a stop (a corner at speed 0 would never start again)
+            j.forced_stop = true;
+            junction_caps(bad);
+        }
         // A dense block keeps one speed: pinned to a junction this slow it would crawl. It ramps
         // on its own instead (sparse).
         for (std::size_t k : {bad, bad + 1})

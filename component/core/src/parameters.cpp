@@ -92,6 +92,16 @@ MachineLimits planned_limits(const PlannerParameters& parameters) {
     return planned;
 }
 
+double hold_time_bound(const PlannerParameters& parameters) {
+    double ramp = 0.0, t2 = 0.0;
+    for (int i = 0; i < parameters.limits.axes; ++i) {
+        const AxisLimits& l = parameters.limits.axis[static_cast<std::size_t>(i)];
+        if (l.max_acceleration > 0.0) ramp = std::max(ramp, l.max_velocity / l.max_acceleration);
+        if (l.max_acceleration > 0.0 && l.max_jerk > 0.0) t2 = std::max(t2, l.max_acceleration / l.max_jerk);
+    }
+    return 2.0 * (ramp + 2.0 * t2);
+}
+
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance) {
     constexpr double shrink_share = 0.9;
     double squares = 0.0;

@@ -66,6 +66,12 @@ MachineLimits planned_limits(const PlannerParameters& parameters);
 // a tolerance. Smoothing at the limits needs no cap: it checks every chord's corner.
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance);
 
+// Smoothing at the limits: a hold or an abort brings the axes to rest within this time (s). The
+// step under way ends (at most one full-speed step, V_a / A_a + T2 on its most loaded axis, T2 =
+// max A_a / J_a), then one more step from the highest speed to rest; a dense run (runs of short
+// blocks) may use twice the jerk time. Measured by tests/core/limits_override_test.cpp.
+double hold_time_bound(const PlannerParameters& parameters);
+
 // Checks max_rate >= 1 and 0 < rate_reserve < 1, finite; returns an empty string or the reason.
 const char* validate_rate(const PlannerParameters& parameters);
 

@@ -41,7 +41,8 @@ struct MachineConfig {
 };
 
 // Built-in machine used when no INI is given: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3,
-// 1 ms servo period, two stages (T1 = 60 ms, T2 = 50 ms), 0.05 mm tolerance, 0.001 mm arc chords.
+// 1 ms servo period, every move smoothed at those limits (no T1: not the paper's fixed chain),
+// 0.05 mm tolerance, 0.001 mm arc chords.
 MachineConfig default_machine();
 
 // Reads the keys above over default_machine(). Throws ConfigError naming file, line and key for a
