@@ -158,16 +158,13 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
 
 }  // namespace
 
-// Override changes (no hold): velocity, acceleration (at the samples and in the finite
+// Override changes (no hold): velocity, acceleration and jerk (at the samples and in the finite
 // differences), every corner and the exact end hold on every program.
-TEST(RandomMachines, OverrideChangesKeepVelocityAccelerationToleranceAndEnd) { check_rate_changes(31, 120, false, false); }
+TEST(RandomMachines, OverrideChangesKeepLimitsToleranceAndEnd) { check_rate_changes(31, 120, false, true); }
 
-// Known to fail (issue 13 stays open on it), measured on these 120 programs:
-// - override changes alone: the jerk limit at the samples, 10 programs, up to 17x the limit (a step
-//   planned after a rate change overlaps the one under way closer than the spacing rules allow);
-// - with holds, resumes and aborts: 11 programs; besides the jerk, a position step of up to 0.01 mm after a hold split a
-//   block and the tool resumed (2 programs), a hold's braking plan 1.4x over an acceleration
-//   limit (1), and aborts inside dense runs that take longer than hold_time_bound() (2).
-// Run with --gtest_also_run_disabled_tests while fixing them.
-TEST(RandomMachines, DISABLED_OverrideChangesKeepTheJerkLimit) { check_rate_changes(31, 120, false, true); }
+// Known to fail (issue 13 stays open on it), measured on these 120 programs: 5 fail. A hold placed
+// while a step is under way can leave the shortened block's plan 'unfit' (its legs do not cover it),
+// so the tool steps by up to 0.01 mm when it resumes (2 programs) or passes an acceleration limit
+// by 4 % while braking (1); an abort inside a dense run can take longer than hold_time_bound()
+// (2, one of them minutes). Run with --gtest_also_run_disabled_tests while fixing them.
 TEST(RandomMachines, DISABLED_HoldResumeAndAbortKeepLimitsToleranceAndStopBound) { check_rate_changes(31, 120, true, true); }

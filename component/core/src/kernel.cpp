@@ -8,6 +8,11 @@ namespace firtp {
 
 namespace {
 
+// A kernel starting within this of the sample has not started: where one step ends a leg and starts
+// the next, the two legs' clocks may round to either side of it, and a sample would see half the
+// step's jerk (its motion so far, ~J t^3 / 6, is nothing).
+constexpr double started_after = 1e-9;  // s
+
 // R(t) of two moving averages a >= b > 0 (the integral of the step response): a cubic ramp-in,
 // a parabola, a cubic ramp-out; R(t) = t - (a + b) / 2 beyond.
 StepSample two_stage_step(double a, double b, double t) {
@@ -38,7 +43,7 @@ Kernel two_stage(double t1, double t2) {
 StepSample Kernel::step(double t) const {
     if (chain != nullptr) return chain->step(t);
     if (a <= 0.0) return t >= 0.0 ? StepSample{t, 1.0, 0.0, 0.0} : StepSample{};  // sharp: full speed from t = 0
-    if (t <= 0.0) return {};
+    if (t <= started_after) return {};
     return two_stage_step(a, b, t);
 }
 
