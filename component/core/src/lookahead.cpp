@@ -455,6 +455,10 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
                 p = std::max(p, std::min(a, b));  // no standstill inside the block
             }
         }
+        // A hold that cannot brake inside the block under way (its next step would have to start
+        // in the past) keeps the block's accepted speeds and brakes from the next one on.
+        if (i == 0 && frozen_.moving && s.brake && s.a == a && !fits(i, a, p, b) && fits(i, a, s.p, s.b))
+            p = s.p, b = s.b;
         const ProfileLegs legs = profile_legs(rules_, profile_input(i, a, b), a, p, b);
         s.unfit = !legs.fits;  // the check turns it back (its entry corner is lowered)
         s.a = a, s.p = p, s.b = b;
