@@ -67,11 +67,15 @@ struct Tracking {
 // moves on when one of the next two segments is closer (two, so that cutting across a short
 // detour cannot stall the tracking), or when the next one is as close (a corner point, or the
 // overlapping segments of a reversal) and fits the direction of motion better.
+// `stray`: how far samples have strayed from the path so far; the tool may cut across a detour
+// of that order (a narrow U of micrometre blocks within its tolerance), so the search for a
+// closer segment reaches over a few times that much path as well.
 std::size_t advance(const std::vector<Segment>& segments, const AxisVector& p, const AxisVector& motion,
-                    std::size_t k, double tie) {
+                    std::size_t k, double tie, double stray) {
     const std::size_t last = segments.size() - 1;
     double d = distance(p, segments[k]);
-    const double reach = motion.norm() + tie;  // how far the tool can have gone since the last sample
+    const double step = motion.norm() + tie;  // how far the tool can have gone since the last sample
+    const double reach = step + 4.0 * stray;
     while (k < last) {
         const double next = distance(p, segments[k + 1]);
         // Further segments, as long as the ones skipped are short enough to pass within a step.
@@ -108,7 +112,7 @@ Tracking track(std::span<const AxisState> samples, const std::vector<Segment>& s
         out.segment.push_back(k);
         if (!p.allFinite()) continue;  // reported by Measured::finite
         const AxisVector motion = samples[std::min(i + 1, n - 1)].position - samples[i > 0 ? i - 1 : 0].position;
-        k = advance(segments, p, motion, k, tie);
+        k = advance(segments, p, motion, k, tie, out.max_distance);
         out.segment.back() = k;
         double d = std::numeric_limits<double>::infinity();
         for (std::size_t s = k > 0 ? k - 1 : 0; s <= std::min(k + 2, last); ++s) d = std::min(d, distance(p, segments[s]));
