@@ -36,6 +36,7 @@ const char* const kHelp =
     "step [N]                         run N base periods now, without the clock (threads stopped)\n"
     "wait [MS] / sleep SECONDS        let time pass (virtual time: step that long if started);\n"
     "                                 'wait' alone: until SIGINT/SIGTERM\n"
+    "loadusr -w sleep SECONDS         the same, as LinuxCNC's HAL files write it (halrun runs them too)\n"
     "show [comp|pin|param|sig|funct|thread|all] [PATTERN]\n"
     "echo TEXT / help / exit\n";
 
@@ -225,6 +226,11 @@ Status Interpreter::dispatch(const Words& w) {
   if (cmd == "exit" || cmd == "quit") {
     finished_ = true;
     return {};
+  }
+  if (cmd == "loadusr" && n == 4 && w[1] == "-w" && w[2] == "sleep") {  // LinuxCNC's way to wait in a HAL file
+    double sec = 0;
+    if (!parse_double(w[3], sec) || sec < 0) return usage("loadusr -w sleep SECONDS");
+    return cmd_sleep_ns(std::llround(sec * 1e9));
   }
   if (cmd == "loadusr" || cmd == "waitusr")
     return Status::error(-ENOSYS, cmd + " is not supported by firtp-hal (run the program beside it)");
