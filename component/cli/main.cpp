@@ -1,5 +1,6 @@
 // firtp: command-line front end of the FIR-filter trajectory planner. Dispatches subcommands and
-// turns errors into "firtp: <what>" on stderr with exit status 1 (input) or 2 (usage).
+// turns errors into "firtp: <what>" on stderr with exit status 1 (input) or 2 (usage); plan and run
+// exit 3 when the measurement finds a tolerance or a limit broken (plan_checks.hpp).
 #include "cli_errors.hpp"
 #include "plan_command.hpp"
 #include "run_command.hpp"
@@ -28,7 +29,9 @@ constexpr const char* usage =
     "Options:\n"
     "  -h, --help         show this help and exit\n\n"
     "Run 'firtp COMMAND --help' for a command's options (plan: --ini, --t1, --t2, --tolerance,\n"
-    "--period, --tolerance-meaning, --csv, --json, --plot; run, serve, host add --lcm-url).\n";
+    "--period, --tolerance-meaning, --csv, --json, --plot; run, serve, host add --lcm-url).\n\n"
+    "Exit status: 0 done; 1 bad input (program, INI, files); 2 bad command line; 3 plan and run:\n"
+    "the measured trajectory breaks a tolerance, an axis limit or the end point (named on stderr).\n";
 
 int dispatch(const std::vector<std::string>& args) {
     if (args.empty()) {

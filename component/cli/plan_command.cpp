@@ -1,6 +1,7 @@
 #include "plan_command.hpp"
 
 #include "gnuplot_pipe.hpp"
+#include "plan_checks.hpp"
 #include "plan_options.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
@@ -26,7 +27,8 @@ int plan_command(std::span<const std::string> args) {
     if (options.report)
         for (const auto& file : write_report(run, options, *gnuplot)) written.push_back(file);
     print_summary(std::cout, run, options.program.filename().string(), written);
-    return 0;
+    std::cout.flush();
+    return report_violations(std::cerr, run);
 }
 
 }  // namespace firtp::cli

@@ -1,8 +1,11 @@
 #include "run_command.hpp"
 
+#include "plan_checks.hpp"
+
 #include "chain_options.hpp"
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"
+#include "plan_checks.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
 #include <firtp/recorded_states.hpp>
@@ -69,7 +72,8 @@ int run_command(std::span<const std::string> args) {
               << " published, " << stats.go_backs << " resends), " << stats.axis_states
               << " axis states back; samples " << run.trajectory.samples.size() << " vs planned " << planned.size()
               << ", largest difference from the plan " << number_text(difference) << " mm\n";
-    return 0;
+    std::cout.flush();
+    return report_violations(std::cerr, run);
 }
 
 }  // namespace firtp::cli
