@@ -42,7 +42,9 @@ po::options_description run_flags() {
 po::options_description serve_flags() {
     po::options_description d = help_flag();
     d.add_options()("exit-when-done", "exit once a program has run to its end (or failed)")(
-        "duration", po::value<double>()->value_name("S"), "exit after S seconds");
+        "duration", po::value<double>()->value_name("S"), "exit after S seconds")(
+        "rt-prio", po::value<int>()->value_name("N"),
+        "servo thread SCHED_FIFO priority 1-99 where the system allows it (80; 0: normal scheduling)");
     d.add(machine_flags()).add(transport_flags(true));
     return d;
 }
@@ -74,6 +76,10 @@ ChainOptions parse_serve_options(std::span<const std::string> args) {
     read_machine_flags(vm, o.plan);
     read_transport(vm, o);
     o.exit_when_done = vm.count("exit-when-done") > 0;
+    if (vm.count("rt-prio")) {
+        o.rt_priority = vm["rt-prio"].as<int>();
+        if (o.rt_priority < 0 || o.rt_priority > 99) throw UsageError("--rt-prio: must be 0 (normal scheduling) or 1-99");
+    }
     if (vm.count("duration")) {
         o.duration = vm["duration"].as<double>();
         if (!(o.duration > 0.0)) throw UsageError("--duration: must be a positive number of seconds");

@@ -17,6 +17,7 @@ struct ChainOptions {
     std::optional<std::filesystem::path> lcm_log;  // run --lcm-log: every message of the run
     bool exit_when_done = false;                   // serve --exit-when-done
     double duration = 0.0;                         // serve --duration S (0: until interrupted)
+    int rt_priority = 80;                          // serve --rt-prio N: SCHED_FIFO N where allowed (0: normal)
     double max_feed = 1.5;                         // host --max-feed
 };
 

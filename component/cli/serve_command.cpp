@@ -3,12 +3,19 @@
 #include "run_command.hpp"
 #include <firtp/servo_chain.hpp>
 
+#include <firtp/hal_shim/runtime.hpp>
 #include <firtp/messages.hpp>
+
+#include <pthread.h>
+#include <sched.h>
 
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstring>
 #include <iostream>
+#include <string>
+#include <thread>
 
 namespace firtp::cli {
 namespace {
@@ -16,6 +23,18 @@ namespace {
 std::atomic<bool> stop_requested{false};
 
 extern "C" void request_stop(int) { stop_requested = true; }
+
+// Whether a thread of this process may run SCHED_FIFO at `priority`: "" or why not.
+std::string fifo_refused(int priority) {
+    int rc = 0;
+    std::thread probe([&] {
+        sched_param sp{};
+        sp.sched_priority = priority;
+        rc = pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp);
+    });
+    probe.join();
+    return rc == 0 ? "" : std::strerror(rc);
+}
 
 }  // namespace
 
@@ -33,9 +52,19 @@ int serve_command(std::span<const std::string> args) {
     firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
+    // Real time where the system allows it (root, CAP_SYS_NICE or an rtprio limit), and say which.
+    std::string scheduling = "SCHED_OTHER (normal scheduling, --rt-prio 0)";
+    if (options.rt_priority > 0) {
+        if (const std::string why = fifo_refused(options.rt_priority); why.empty()) {
+            hal_shim::set_rt_priority(options.rt_priority);
+            scheduling = "SCHED_FIFO " + std::to_string(options.rt_priority);
+        } else {
+            scheduling = "SCHED_OTHER (SCHED_FIFO " + std::to_string(options.rt_priority) + " refused: " + why + ")";
+        }
+    }
     chain.start();
-    std::cout << "firtp serve: servo thread every " << machine.period * 1e3 << " ms, waiting for blocks on " << url
-              << std::endl;
+    std::cout << "firtp serve: servo thread every " << machine.period * 1e3 << " ms, " << scheduling
+              << ", waiting for blocks on " << url << std::endl;
 
     using Clock = std::chrono::steady_clock;
     const Clock::time_point begin = Clock::now();
