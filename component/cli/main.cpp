@@ -5,6 +5,7 @@
 #include "plan_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
+#include <firtp/version.hpp>
 
 #include <exception>
 #include <span>
@@ -27,7 +28,8 @@ constexpr const char* usage =
     "  simulate PROGRAM.ngc  firtp tuned to the structural modes, untuned, and an S-curve planner\n"
     "                     driving the modes: residual vibration table, --out DIR for plots\n\n"
     "Options:\n"
-    "  -h, --help         show this help and exit\n\n"
+    "  -h, --help         show this help and exit\n"
+    "  --version          print firtp's version and exit\n\n"
     "Run 'firtp COMMAND --help' for a command's options (plan: --ini, --t1, --t2, --tolerance,\n"
     "--period, --tolerance-meaning, --csv, --json, --plot; run, serve, host add --lcm-url).\n\n"
     "Exit status: 0 done; 1 bad input (program, INI, files); 2 bad command line; 3 plan and run:\n"
@@ -37,6 +39,10 @@ int dispatch(const std::vector<std::string>& args) {
     if (args.empty()) {
         std::cerr << usage;
         return firtp::cli::exit_usage_error;
+    }
+    if (args[0] == "--version") {
+        std::cout << "firtp " << firtp::version << "\n";
+        return 0;
     }
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         std::cout << usage;

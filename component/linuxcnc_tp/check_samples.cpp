@@ -25,6 +25,7 @@
 // --hold S: somewhere inside the motion the tool rested at least S seconds (a pause).
 // --reference CSV: `firtp plan --csv` of the same program and machine; every period of the
 // motion must equal it within --within (1e-9 mm), and both must last as long.
+#include <firtp/version.hpp>
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
@@ -136,6 +137,10 @@ nlohmann::json stats_json(const Stats& s) {
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.size() == 1 && args[0] == "--version") {
+        std::printf("firtp-tp-check %s\n", firtp::version);
+        return 0;
+    }
     if (args.size() == 1 && args[0] == "--tsc-hz") {
         std::printf("%.0f\n", measure_tsc_hz());
         return 0;

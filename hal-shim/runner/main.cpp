@@ -1,4 +1,5 @@
 // main.cpp - firtp-hal: runs HAL components without LinuxCNC, from a halcmd-style script.
+#include <firtp/version.hpp>
 #include <unistd.h>
 
 #include <csignal>
@@ -17,6 +18,7 @@ const char* const kUsage =
     "usage: firtp-hal [options] [-f FILE | FILE]\n"
     "Reads halcmd-style commands from FILE (or standard input) and runs them.\n"
     "  -f FILE        command file ('-' = standard input)\n"
+    "  --version      print the version\n"
     "  -n TICKS       at 'start', run TICKS base periods (with --no-realtime) or wait for them\n"
     "  --no-realtime  virtual time: 'start' runs nothing by itself; 'step N', 'sleep' and\n"
     "                 'wait MS' run whole periods at once, deterministic and fast\n"
@@ -58,6 +60,9 @@ int main(int argc, char** argv) {
     };
     if (a == "-h" || a == "--help") {
       std::cout << kUsage;
+      return 0;
+    } else if (a == "--version") {
+      std::cout << "firtp-hal " << firtp::version << "\n";
       return 0;
     } else if (a == "-f") {
       file = value("-f");

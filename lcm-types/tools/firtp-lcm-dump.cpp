@@ -1,6 +1,7 @@
 // firtp-lcm-dump: reads a .lcmlog (lcm-logger) and prints one line per event, or with --count a
 // summary per channel with seq gaps. Messages whose crc does not match are marked CORRUPTED (and
 // counted apart). LCM 1.3.1 ships no command-line spy.
+#include <firtp/version.hpp>
 #include "event_text.hpp"
 #include "seq_summary.hpp"
 
@@ -26,6 +27,7 @@ bool parse(int argc, char** argv, Options& options, int& code) {
     po::options_description visible("Usage: firtp-lcm-dump [options] LOG.lcmlog\nOptions");
     visible.add_options()
         ("help,h", "print this help")
+        ("version", "print the version")
         ("channel,c", po::value(&options.channel), "only channels matching this regular expression (whole name)")
         ("count", po::bool_switch(&options.count), "print a summary per channel: events, seq range, gaps");
     po::options_description all;
@@ -36,6 +38,11 @@ bool parse(int argc, char** argv, Options& options, int& code) {
         po::variables_map vm;
         po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
         po::notify(vm);
+        if (vm.count("version") != 0) {
+            std::cout << "firtp-lcm-dump " << firtp::version << "\n";
+            code = 0;
+            return false;
+        }
         if (vm.count("help") != 0) {
             std::cout << visible;
             code = 0;
