@@ -14,15 +14,8 @@ source "$(dirname "$0")/hal_session.sh"
 chmod a+r "$work"/*
 
 # LinuxCNC
-session=1
 lcnc_begin=$(date +%s%N)
-(cd "$work" && as_user timeout 60 halrun -f linuxcnc.hal) > "$work/halrun.log" 2>&1 &
-halrun_pid=$!  # waited for in the background, so a signal reaches the cleanup at once
-if ! wait "$halrun_pid"; then
-  halrun_pid=
-  echo "FAIL: halrun -f linuxcnc.hal"; cat "$work/halrun.log"; exit 1
-fi
-halrun_pid=
+run_halrun linuxcnc.hal
 lcnc_ms=$((($(date +%s%N) - lcnc_begin) / 1000000))
 overruns=$(awk '$NF == "sampler.0.overruns" {print $(NF - 1)}' "$work/halrun.log")
 [ "$overruns" = 0 ] \

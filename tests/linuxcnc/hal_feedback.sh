@@ -7,14 +7,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/hal_session.sh"
 
 cp "$here/feedback.hal" "$work/" && chmod a+r "$work/feedback.hal"
-session=1
-(cd "$work" && as_user timeout 60 halrun -f feedback.hal) > "$work/halrun.log" 2>&1 &
-halrun_pid=$!
-if ! wait "$halrun_pid"; then
-  halrun_pid=
-  echo "FAIL: halrun -f feedback.hal"; cat "$work/halrun.log"; exit 1
-fi
-halrun_pid=
+run_halrun feedback.hal
 got=$(grep -v '^Note:' "$work/halrun.log" | tr '\n' ' ')
 want="12.5 5 12.5 -4.25 0 19 -5.55 0 4 8 "
 echo "getp printed: $got"

@@ -8,14 +8,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/hal_session.sh"
 
 cp "$hal" "$work/pins.hal" && chmod a+r "$work/pins.hal"
-session=1
-(cd "$work" && as_user timeout 60 halrun -f pins.hal) > "$work/halrun.log" 2>&1 &
-halrun_pid=$!
-if ! wait "$halrun_pid"; then
-  halrun_pid=
-  echo "FAIL: halrun -f pins.hal"; cat "$work/halrun.log"; exit 1
-fi
-halrun_pid=
+run_halrun pins.hal
 mapfile -t got < <(grep -v '^Note:' "$work/halrun.log")
 echo "getp printed: ${got[*]}"
 [ "${#got[@]}" -eq 6 ] || { echo "FAIL: expected 6 values"; exit 1; }

@@ -4,8 +4,8 @@
 # to create; rtapi_app is setuid root and drops to the real uid itself), places this build's
 # firtp.so where rtapi_app looks (`loadrt /path/firtp` is refused) and puts back what was there on
 # exit, and waits for another HAL session to end: only one can exist per machine (ctest runs these
-# under RESOURCE_LOCK linuxcnc). Set session=1 before starting halrun: the exit trap then runs
-# `halrun -U`; run halrun in the background as $halrun_pid so a signal reaches the trap at once.
+# under RESOURCE_LOCK linuxcnc). run_halrun FILE (at the end) runs halrun -f FILE: it sets session=1,
+# so the exit trap runs `halrun -U`, and runs halrun in the background so a signal reaches the trap.
 skip() { echo "SKIPPED: $*"; exit 77; }
 [ "$module" != none ] || skip "LinuxCNC's headers are not installed (linuxcnc-uspace-dev), so the LinuxCNC firtp.so was not built (FIRTP_LINUXCNC)"
 command -v halrun > /dev/null || skip "halrun not found (linuxcnc-uspace)"
@@ -51,3 +51,17 @@ fi
 # One HAL session per machine: wait for someone else's to end rather than break it.
 for _ in $(seq 60); do running || break; sleep 1; done
 if running; then echo "FAIL: another HAL session (rtapi_app) is still running after 60 s"; exit 1; fi
+
+# Runs $work/$1 (readable by the session's user) under halrun as that user, output in
+# $work/halrun.log; fails the test with the log if halrun fails. In the background, so a signal
+# reaches the cleanup at once.
+run_halrun() {
+  session=1
+  (cd "$work" && as_user timeout 60 halrun -f "$1") > "$work/halrun.log" 2>&1 &
+  halrun_pid=$!
+  if ! wait "$halrun_pid"; then
+    halrun_pid=
+    echo "FAIL: halrun -f $1"; cat "$work/halrun.log"; exit 1
+  fi
+  halrun_pid=
+}

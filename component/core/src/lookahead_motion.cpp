@@ -18,14 +18,6 @@ constexpr double crawl_fraction = 1e-3;
 constexpr double error_margin = 1e-6;  // of epsilon: what the samples round to may differ a little
 constexpr std::size_t report_ring = 64;
 
-void normalise(std::int64_t& tick, double& offset, double period) {
-    const double whole = std::floor(offset / period);
-    tick += static_cast<std::int64_t>(whole);
-    offset -= whole * period;
-    if (offset >= period) offset -= period, ++tick;
-    if (offset < 0.0) offset = 0.0;
-}
-
 }  // namespace
 
 double Lookahead::frozen_centre() const {

@@ -22,15 +22,6 @@ constexpr double error_margin = 1e-5;       // of epsilon, for the approach foun
 
 double longest_pulse(double period) { return max_pulse_periods * period; }
 
-// t = tick * period + offset, offset normalised into [0, period).
-void normalise(std::int64_t& tick, double& offset, double period) {
-    const double whole = std::floor(offset / period);
-    tick += static_cast<std::int64_t>(whole);
-    offset -= whole * period;
-    if (offset >= period) offset -= period, ++tick;
-    if (offset < 0.0) offset = 0.0;
-}
-
 double seconds_between(std::int64_t tick_a, double offset_a, std::int64_t tick_b, double offset_b, double period) {
     return static_cast<double>(tick_b - tick_a) * period + (offset_b - offset_a);
 }

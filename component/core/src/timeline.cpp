@@ -1,6 +1,16 @@
 #include <firtp/timeline.hpp>
 
+#include <cmath>
+
 namespace firtp {
+
+void normalise(std::int64_t& tick, double& offset, double period) {
+    const double whole = std::floor(offset / period);
+    tick += static_cast<std::int64_t>(whole);
+    offset -= whole * period;
+    if (offset >= period) offset -= period, ++tick;
+    if (offset < 0.0) offset = 0.0;
+}
 
 StepSample Leg::progress(double t) const {
     if (!(tv > 0.0)) return {};  // a leg of no time (two steps at one instant) moves nothing

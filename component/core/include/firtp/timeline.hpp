@@ -33,6 +33,10 @@
 
 namespace firtp {
 
+// Times on the tick grid are t = tick * period + offset: moves whole periods of `offset` into
+// `tick`, so that offset lies in [0, period).
+void normalise(std::int64_t& tick, double& offset, double period);
+
 struct Leg {
     AxisVector delta = AxisVector::Zero();  // end - start
     AxisVector end = AxisVector::Zero();    // exact end point
