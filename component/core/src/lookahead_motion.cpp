@@ -17,6 +17,8 @@ constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by 
 constexpr double crawl_fraction = 1e-3;
 constexpr double error_margin = 1e-6;  // of epsilon: what the samples round to may differ a little
 constexpr std::size_t report_ring = 64;
+// check()'s *bad when the block under way cannot take the new plan (no corner to lower).
+constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
 
 }  // namespace
 
@@ -297,7 +299,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
             return false;
         }
         if (i == 0 && frozen_.moving && !held_) {  // a new feed the motion under way cannot take
-            *bad = count_;
+            *bad = front_unfit;
             return false;
         }
         ++stats_.unfit;  // entered from rest: a defect
@@ -369,7 +371,7 @@ void Lookahead::replan(std::size_t first) {
         std::size_t bad = count_;
         if (check(from, &bad)) break;
         ++stats_.checks_failed;
-        if (bad == count_) {  // keep the plan accepted before (the override applies from the next block)
+        if (bad == front_unfit) {  // keep the plan accepted before (the override applies from the next block)
             for (std::size_t i = kept; i < count_; ++i) seg(i) = saved_[i];
             refresh_current_leg();
             return;
