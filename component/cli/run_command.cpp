@@ -1,7 +1,5 @@
 #include "run_command.hpp"
 
-#include "plan_checks.hpp"
-
 #include "chain_options.hpp"
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"

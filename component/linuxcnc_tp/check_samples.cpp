@@ -25,11 +25,11 @@
 // --hold S: somewhere inside the motion the tool rested at least S seconds (a pause).
 // --reference CSV: `firtp plan --csv` of the same program and machine; every period of the
 // motion must equal it within --within (1e-9 mm), and both must last as long.
-#include <firtp/version.hpp>
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/measure.hpp>
+#include <firtp/version.hpp>
 
 #include <nlohmann/json.hpp>
 

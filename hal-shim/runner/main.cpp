@@ -1,5 +1,4 @@
 // main.cpp - firtp-hal: runs HAL components without LinuxCNC, from a halcmd-style script.
-#include <firtp/version.hpp>
 #include <unistd.h>
 
 #include <csignal>
@@ -10,6 +9,7 @@
 #include <string>
 
 #include "firtp/hal_shim/interpreter.hpp"
+#include "firtp/version.hpp"
 #include "rtapi.h"
 
 namespace {

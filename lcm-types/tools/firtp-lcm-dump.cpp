@@ -1,9 +1,9 @@
 // firtp-lcm-dump: reads a .lcmlog (lcm-logger) and prints one line per event, or with --count a
 // summary per channel with seq gaps. Messages whose crc does not match are marked CORRUPTED (and
 // counted apart). LCM 1.3.1 ships no command-line spy.
-#include <firtp/version.hpp>
 #include "event_text.hpp"
 #include "seq_summary.hpp"
+#include <firtp/version.hpp>
 
 #include <boost/program_options.hpp>
 #include <lcm/lcm-cpp.hpp>

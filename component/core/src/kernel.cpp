@@ -77,15 +77,6 @@ double Kernel::peak_jerk() const {
     return b > 0.0 ? 1.0 / (a * b) : std::numeric_limits<double>::infinity();
 }
 
-double jerk_time(const MachineLimits& limits) {
-    double t = 0.0;
-    for (int i = 0; i < limits.axes; ++i) {
-        const AxisLimits& l = limits.axis[i];
-        if (l.max_acceleration > 0.0 && l.max_jerk > 0.0) t = std::max(t, l.max_acceleration / l.max_jerk);
-    }
-    return t;
-}
-
 double acceleration_time(const MachineLimits& limits, const AxisVector& dv) {
     double t = 0.0;
     for (int i = 0; i < limits.axes; ++i) {

@@ -52,7 +52,7 @@ std::array<double, max_stages> limit_filter_times(const MachineLimits& limits, s
     std::array<double, max_stages> t{};
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = i < given.size() ? given[i] : 0.0;
     if (t[0] <= 0.0) t[0] = worst_ratio(limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
-    if (t[1] <= 0.0) t[1] = worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
+    if (t[1] <= 0.0) t[1] = jerk_time(limits);
     return t;
 }
 
@@ -92,14 +92,13 @@ MachineLimits planned_limits(const PlannerParameters& parameters) {
     return planned;
 }
 
+double jerk_time(const MachineLimits& limits) {
+    return worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
+}
+
 double hold_time_bound(const PlannerParameters& parameters) {
-    double ramp = 0.0, t2 = 0.0;
-    for (int i = 0; i < parameters.limits.axes; ++i) {
-        const AxisLimits& l = parameters.limits.axis[static_cast<std::size_t>(i)];
-        if (l.max_acceleration > 0.0) ramp = std::max(ramp, l.max_velocity / l.max_acceleration);
-        if (l.max_acceleration > 0.0 && l.max_jerk > 0.0) t2 = std::max(t2, l.max_acceleration / l.max_jerk);
-    }
-    return 2.0 * (ramp + 2.0 * t2);
+    const double ramp = worst_ratio(parameters.limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
+    return 2.0 * (ramp + 2.0 * jerk_time(parameters.limits));
 }
 
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance) {

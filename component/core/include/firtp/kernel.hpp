@@ -44,9 +44,6 @@ struct Kernel {
 // Two moving averages of lengths t1 and t2 (any order, >= 0).
 Kernel two_stage(double t1, double t2);
 
-// The jerk time every step shares: max over the axes of A_a / J_a; 0 when no axis limits jerk.
-double jerk_time(const MachineLimits& limits);
-
 // T1 of a step dV: max over the axes of |dV_a| / A_a (0 for axes without an acceleration limit).
 double acceleration_time(const MachineLimits& limits, const AxisVector& dv);
 

@@ -66,6 +66,10 @@ MachineLimits planned_limits(const PlannerParameters& parameters);
 // a tolerance. Smoothing at the limits needs no cap: it checks every chord's corner.
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance);
 
+// The jerk time every step shares when smoothing at the limits (kernel.hpp), and T2's default for
+// the paper's chain: max over the axes of A_a / J_a; 0 when no axis limits jerk.
+double jerk_time(const MachineLimits& limits);
+
 // Smoothing at the limits: a hold or an abort brings the axes to rest within this time (s). The
 // step under way ends (at most one full-speed step, V_a / A_a + T2 on its most loaded axis, T2 =
 // max A_a / J_a), then one more step from the highest speed to rest; a dense run (runs of short
