@@ -31,6 +31,21 @@ StepSample two_stage_step(double a, double b, double t) {
     return {t - 0.5 * td + u * u * u / (6.0 * ab), 1.0 - u * u / (2.0 * ab), u / ab, -1.0 / ab};
 }
 
+// two_stage_step(a, b, t).position, the same arithmetic.
+double two_stage_position(double a, double b, double t) {
+    const double td = a + b;
+    if (t >= td) return t - 0.5 * td;
+    if (b <= 0.0) return t * t / (2.0 * a);
+    const double ab = a * b;
+    if (t < b) return t * t * t / (6.0 * ab);
+    if (t < a) {
+        const double m = t - 0.5 * b;
+        return m * m / (2.0 * a) + b * b / (24.0 * a);
+    }
+    const double u = td - t;
+    return t - 0.5 * td + u * u * u / (6.0 * ab);
+}
+
 }  // namespace
 
 Kernel two_stage(double t1, double t2) {
@@ -45,6 +60,13 @@ StepSample Kernel::step(double t) const {
     if (a <= 0.0) return t >= 0.0 ? StepSample{t, 1.0, 0.0, 0.0} : StepSample{};  // sharp: full speed from t = 0
     if (t <= started_after) return {};
     return two_stage_step(a, b, t);
+}
+
+double Kernel::step_position(double t) const {
+    if (chain != nullptr) return chain->step(t).position;
+    if (a <= 0.0) return t >= 0.0 ? t : 0.0;
+    if (t <= started_after) return 0.0;
+    return two_stage_position(a, b, t);
 }
 
 double Kernel::position(double t) const {

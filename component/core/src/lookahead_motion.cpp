@@ -306,10 +306,12 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     }
     build_legs(from);
     double end = enter_[first];
+    double width = 0.0;  // the widest kernel of these legs: the reach of a change among them
     for (const TimedLeg& leg : legs_) {
         end = std::max(end, leg.finish());
-        max_width_ = std::max({max_width_, leg.rising.width(), leg.falling.width()});
+        width = std::max({width, leg.rising.width(), leg.falling.width()});
     }
+    max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
     const double begin = std::max(enter_[first] - max_width_, 0.0);
     LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
@@ -333,7 +335,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     for (std::size_t i = from; i + 1 < count_; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
-        if (when_[i] < enter_[first] - max_width_ - 4.0 * parameters_.period) continue;
+        if (when_[i] < enter_[first] - width - 4.0 * parameters_.period) continue;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period);
         } else {

@@ -140,6 +140,7 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
 
 void index_legs(std::span<TimedLeg> legs) {
     double reach = 0.0;
+    int axes = 0;
     AxisVector at = AxisVector::Zero();
     for (TimedLeg& leg : legs) {
         leg.before = at;
@@ -147,14 +148,18 @@ void index_legs(std::span<TimedLeg> legs) {
         leg.rise_centre = leg.rise + 0.5 * leg.rising.width();
         leg.fall_centre = leg.rise + leg.fall + 0.5 * leg.falling.width();
         reach = std::max({reach, 0.5 * leg.rising.width(), 0.5 * leg.falling.width()});
+        for (int i = max_axes; i > axes; --i)
+            if (leg.delta[i - 1] != 0.0) axes = i;
     }
-    for (TimedLeg& leg : legs) leg.reach = reach;
+    for (TimedLeg& leg : legs) leg.reach = reach, leg.axes = axes;
 }
 
-AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, double t) {
-    AxisState s;
-    s.time = t;
-    if (legs.empty()) return s;
+namespace {
+
+// relative_state's sum; with Derivatives false only the position (the same arithmetic).
+template <bool Derivatives>
+void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, AxisState& s) {
+    if (legs.empty()) return;
     std::size_t lo = 0, hi = legs.size();  // legs [lo, hi) may move at t
     const double reach = legs.front().reach;
     if (reach > 0.0) {
@@ -174,18 +179,45 @@ AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, dou
         if (lo > corner + 1) s.position += done - corner_end;     // legs after the corner that ended
         if (hi <= corner) s.position -= corner_end - waiting;     // legs up to the corner not begun
     }
+    const int axes = legs.front().axes;  // the other axes' sums stay 0
     for (std::size_t k = lo; k < hi; ++k) {
         const TimedLeg& leg = legs[k];
         if (!(leg.tv > 0.0)) continue;
-        const StepSample up = leg.rising.step(t - leg.rise);
-        const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
-        const double p = (up.position - down.position) / leg.tv - (k <= corner ? 1.0 : 0.0);
-        s.position += leg.delta * p;
-        s.velocity += leg.delta * ((up.velocity - down.velocity) / leg.tv);
-        s.acceleration += leg.delta * ((up.acceleration - down.acceleration) / leg.tv);
-        s.jerk += leg.delta * ((up.jerk - down.jerk) / leg.tv);
+        const double sign = k <= corner ? 1.0 : 0.0;
+        if constexpr (Derivatives) {
+            const StepSample up = leg.rising.step(t - leg.rise);
+            const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
+            const double p = (up.position - down.position) / leg.tv - sign;
+            const double v = (up.velocity - down.velocity) / leg.tv;
+            const double a = (up.acceleration - down.acceleration) / leg.tv;
+            const double j = (up.jerk - down.jerk) / leg.tv;
+            for (int i = 0; i < axes; ++i) {
+                const double d = leg.delta[i];
+                s.position[i] += d * p;
+                s.velocity[i] += d * v;
+                s.acceleration[i] += d * a;
+                s.jerk[i] += d * j;
+            }
+        } else {
+            const double p = (leg.rising.step_position(t - leg.rise) - leg.falling.step_position(t - leg.rise - leg.fall)) / leg.tv - sign;
+            for (int i = 0; i < axes; ++i) s.position[i] += leg.delta[i] * p;
+        }
     }
+}
+
+}  // namespace
+
+AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, double t) {
+    AxisState s;
+    s.time = t;
+    sum_legs<true>(legs, corner, t, s);
     return s;
+}
+
+AxisVector relative_position(std::span<const TimedLeg> legs, std::size_t corner, double t) {
+    AxisState s;
+    sum_legs<false>(legs, corner, t, s);
+    return s.position;
 }
 
 namespace {
@@ -222,9 +254,9 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         const double phase = static_cast<double>(f) / std::max(phases, 1);
         const double k0 = std::floor(best.time / period - phase);
         double nearest = HUGE_VAL;
-        AxisVector previous = relative_state(legs, corner, (k0 - sampled_chords + phase) * period).position;
+        AxisVector previous = relative_position(legs, corner, (k0 - sampled_chords + phase) * period);
         for (double k = k0 - sampled_chords + 1; k <= k0 + sampled_chords + 1; ++k) {
-            const AxisVector next = relative_state(legs, corner, (k + phase) * period).position;
+            const AxisVector next = relative_position(legs, corner, (k + phase) * period);
             nearest = std::min(nearest, chord_distance(previous, next));
             previous = next;
         }
@@ -245,7 +277,7 @@ double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double 
     for (std::size_t k = lo; k <= corner; ++k) first -= legs[k].delta;
     double worst = 0.0;
     for (double k = std::ceil(from / period); k * period <= to; ++k) {
-        const AxisVector p = relative_state(legs, corner, k * period).position;
+        const AxisVector p = relative_position(legs, corner, k * period);
         double nearest = HUGE_VAL;
         AxisVector a = first;
         for (std::size_t m = lo; m <= hi; ++m) {

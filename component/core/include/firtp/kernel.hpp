@@ -29,6 +29,7 @@ struct Kernel {
     // Response to a unit velocity step whose smoothing starts at t = 0 (position, velocity 0 -> 1,
     // acceleration, jerk).
     StepSample step(double t) const;
+    double step_position(double t) const;  // step(t).position, bit for bit, without the derivatives
     double position(double t) const;
     // How far the smoothed motion leads the command at the step's middle, per unit of dV: R(Td/2).
     // For two stages (3 a^2 + b^2) / (24 a); the corner error of a turn at speed V is 2 V s lead()

@@ -42,6 +42,7 @@ struct TimedLeg {
     double rise_centre = 0.0;
     double fall_centre = 0.0;
     double reach = 0.0;
+    int axes = max_axes;  // the axes any leg of the set moves: 1 + the last with a non-zero delta
 };
 
 // Indexes legs in path order (their steps' centres do not decrease) so that relative_state()
@@ -81,6 +82,8 @@ private:
 // acceleration and jerk: legs up to `corner` count S - 1, later ones S. O(legs in motion at t)
 // when indexed (index_legs), else O(legs).
 AxisState relative_state(std::span<const TimedLeg> legs, std::size_t corner, double t);
+// Its position alone, bit for bit the same (the closest approach's chords need no derivatives).
+AxisVector relative_position(std::span<const TimedLeg> legs, std::size_t corner, double t);
 
 struct Approach {
     double distance = 0.0;  // the larger of smooth and sampled
