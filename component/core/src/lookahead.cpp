@@ -579,7 +579,8 @@ void Lookahead::place_hold_stop() {
         in.length = 0.0;
         const double reach = a * profile_legs(rules_, in, a, a, a).x0;
         const double start = i == 0 ? frozen_.consumed : 0.0;
-        if (!exit_is_stop(i) && reach < seg_length(i) * (1.0 - 1e-9) && count_ < segments_.size()) {
+        // Also where the block ends in a stop: that stop may lie far beyond the earliest one.
+        if (reach < seg_length(i) * (1.0 - 1e-9) && count_ < segments_.size()) {
             Segment rest = s;  // the rest of the block, from the stop on, with the junction after it
             const double at = start + reach;
             const AxisVector point = s.start + s.u * at;
