@@ -70,7 +70,10 @@ set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/firtp/firtp")
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-  "libc6 (>= 2.36), libstdc++6 (>= 12), libgcc-s1 (>= 3.0), libboost-program-options1.74.0, liblcm1 (>= 1.3.1), libglib2.0-0, linuxcnc-uspace (>= 2.9)")
+  "libc6 (>= 2.36), libstdc++6 (>= 12), libgcc-s1 (>= 3.0), libboost-program-options1.74.0, liblcm1 (>= 1.3.1)")
+if(FIRTP_LINUXCNC_ENABLED)  # the modules: rtapi_app, motmod, liblinuxcncini
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", linuxcnc-uspace (>= 2.9)")
+endif()
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "gnuplot-nox, liblcm-bin")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liblcm-java, libjchart2d-java, default-jre")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)
