@@ -62,6 +62,13 @@ if command -v halrun > /dev/null; then
   echo "halrun (as nobody): loadrt firtp found the packaged module; firtp.tolerance 0.03"
 fi
 
+if [ -e "$moddir/firtp_tp.so" ]; then  # install-linuxcnc's way back leaves the package's modules alone
+  cmake --build "$build" --target uninstall-linuxcnc > "$work/uninstall.log" 2>&1 || { cat "$work/uninstall.log"; fail "uninstall-linuxcnc"; }
+  [ -e "$moddir/firtp_tp.so" ] && [ -e "$moddir/firtp.so" ] || fail "uninstall-linuxcnc removed a module the package owns"
+  grep -q 'belongs to the package firtp' "$work/uninstall.log" || { cat "$work/uninstall.log"; fail "uninstall-linuxcnc did not say why it left them"; }
+  echo "uninstall-linuxcnc: leaves the package's modules to dpkg"
+fi
+
 dpkg -P firtp > "$work/dpkg.log" 2>&1 || { cat "$work/dpkg.log"; fail "dpkg -P firtp"; }
 installed=0
 left=$(while read -r f; do [ ! -e "$f" ] || echo "$f"; done < "$work/files.txt")
