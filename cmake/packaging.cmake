@@ -10,7 +10,7 @@
 #                                 prefix, lib/linuxcnc/modules by default: with the prefix /usr
 #                                 (the package) that is where rtapi_app loads modules from
 #   share/firtp/lcm-types/        the .lcm messages; share/java/firtp_lcm_types.jar for lcm-spy
-#   share/man/man1, man9          firtp(1), firtp(9), firtp_tp(9)
+#   share/man/man1, man9          firtp(1), firtp(9), firtp_tp(9), gzip'd
 #   share/doc/firtp/              README, licence, docs, examples/ (programs, INIs, HAL files,
 #                                 LinuxCNC configurations)
 include_guard(GLOBAL)
@@ -42,11 +42,23 @@ if(TARGET firtp_lcm_types_jar)
 endif()
 install(PROGRAMS ${CMAKE_SOURCE_DIR}/lcm-types/lcm-spy.sh DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME firtp-lcm-spy)
 
-install(FILES ${CMAKE_SOURCE_DIR}/docs/man/firtp.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-install(FILES ${CMAKE_SOURCE_DIR}/docs/man/firtp.9 ${CMAKE_SOURCE_DIR}/docs/man/firtp_tp.9
-  DESTINATION ${CMAKE_INSTALL_MANDIR}/man9)
+# Man pages compressed as Debian installs them (gzip -n: the same bytes every build).
+find_program(FIRTP_GZIP gzip REQUIRED)
+set(_firtp_man_gz)
+foreach(page firtp.1 firtp.9 firtp_tp.9)
+  set(gz ${CMAKE_BINARY_DIR}/man/${page}.gz)
+  add_custom_command(OUTPUT ${gz}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
+    COMMAND sh -c "'${FIRTP_GZIP}' -9 -n -c '${CMAKE_SOURCE_DIR}/docs/man/${page}' > '${gz}'"
+    DEPENDS ${CMAKE_SOURCE_DIR}/docs/man/${page} VERBATIM)
+  string(REGEX REPLACE ".*\\." "" section ${page})
+  install(FILES ${gz} DESTINATION ${CMAKE_INSTALL_MANDIR}/man${section})
+  list(APPEND _firtp_man_gz ${gz})
+endforeach()
+add_custom_target(firtp_man_pages ALL DEPENDS ${_firtp_man_gz})
 
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright)  # Debian's place
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs PATTERN man EXCLUDE)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples
   USE_SOURCE_PERMISSIONS PATTERN __pycache__ EXCLUDE)

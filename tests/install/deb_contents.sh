@@ -22,8 +22,9 @@ echo "Package firtp $(field Version) $(field Architecture); Depends: $depends"
 
 dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|' > "$work/files.txt"
 expect=(/usr/bin/firtp /usr/bin/firtp-hal /usr/bin/firtp-lcm-dump /usr/bin/firtp-tp-check /usr/bin/firtp-lcm-spy
-  /usr/lib/firtp/firtp.so /usr/share/man/man1/firtp.1 /usr/share/man/man9/firtp.9 /usr/share/man/man9/firtp_tp.9
-  /usr/share/firtp/lcm-types/block_t.lcm /usr/share/doc/firtp/examples/diamond.ngc /usr/share/doc/firtp/LICENSE)
+  /usr/lib/firtp/firtp.so /usr/share/man/man1/firtp.1.gz /usr/share/man/man9/firtp.9.gz /usr/share/man/man9/firtp_tp.9.gz
+  /usr/share/firtp/lcm-types/block_t.lcm /usr/share/doc/firtp/examples/diamond.ngc /usr/share/doc/firtp/LICENSE
+  /usr/share/doc/firtp/copyright)
 if [ "$linuxcnc" = 1 ]; then
   moddir=$(sed -n 's/^RTLIBDIR := \(\/.*\)$/\1/p' /usr/share/linuxcnc/Makefile.modinc 2> /dev/null | tail -1)
   moddir=${moddir:-/usr/lib/linuxcnc/modules}
@@ -31,11 +32,12 @@ if [ "$linuxcnc" = 1 ]; then
   grep -q 'linuxcnc-uspace' <<< "$depends" || fail "Depends does not name linuxcnc-uspace"
 fi
 for f in "${expect[@]}"; do grep -qx -- "$f" "$work/files.txt" || fail "$f is not in the package"; done
-if grep -vE '^/usr/' "$work/files.txt" | grep -vE '^/$' | grep -q .; then
+if [ -n "$(grep -vE '^/usr/|^/$' "$work/files.txt" || true)" ]; then
   fail "files outside /usr: $(grep -vE '^/usr/|^/$' "$work/files.txt" | tr '\n' ' ')"
 fi
 echo "$(grep -vc '/$' "$work/files.txt") files, all under /usr, the ${#expect[@]} expected among them"
-if dpkg-deb -c "$deb" | awk '{print $2}' | grep -vx 'root/root' | grep -q .; then fail "files not owned by root/root"; fi
+owners=$(dpkg-deb -c "$deb" | awk '{print $2}' | sort -u)
+[ "$owners" = root/root ] || fail "files not owned by root/root: $owners"
 
 # Every NEEDED library of every packaged ELF file comes from a package that Depends names.
 mkdir "$work/root"
@@ -47,11 +49,12 @@ while IFS= read -r f; do
   for lib in $(readelf -d "$f" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'); do
     # in the package itself, where the file's $ORIGIN RUNPATH points
     if [ -n "$runpath" ] && [ -e "${runpath//\$ORIGIN/$(dirname "$f")}/$lib" ]; then continue; fi
-    path=$(ldconfig -p | awk -v l="$lib" '$1 == l && /x86-64|x86_64|64bit/ {print $NF; exit}')
-    [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l {print $NF; exit}')
+    # (no early exit in awk: ldconfig would die of SIGPIPE, and pipefail fail the test)
+    path=$(ldconfig -p | awk -v l="$lib" '$1 == l && /x86-64|x86_64|64bit/ && !p {p = $NF} END {print p}')
+    [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l && !p {p = $NF} END {print p}')
     [ -n "$path" ] || fail "$f needs $lib, which ldconfig does not know"
-    owner=$(dpkg -S "$(readlink -f "$path")" 2> /dev/null | head -1 | cut -d: -f1) || true
-    [ -n "$owner" ] || owner=$(dpkg -S "$path" 2> /dev/null | head -1 | cut -d: -f1) || true
+    owner=$(dpkg -S "$(readlink -f "$path")" 2> /dev/null | sed -n '1s/:.*//p') || true
+    [ -n "$owner" ] || owner=$(dpkg -S "$path" 2> /dev/null | sed -n '1s/:.*//p') || true
     [ -n "$owner" ] || fail "$f needs $lib ($path), which no package owns"
     needed_from[$owner]+="${f#"$work/root"} "
   done

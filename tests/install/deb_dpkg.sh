@@ -11,7 +11,7 @@ skip() { echo "SKIPPED: $*"; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "needs root (dpkg -i)"
 [ "${FIRTP_TEST_DPKG:-0}" = 1 ] || skip "changes the system: run with FIRTP_TEST_DPKG=1 (ctest -L package)"
 command -v dpkg > /dev/null || skip "no dpkg"
-if dpkg-query -W -f='${Status}' firtp 2> /dev/null | grep -q 'installed'; then skip "a firtp package is installed already"; fi
+if [[ "$(dpkg-query -W -f='${Status}' firtp 2> /dev/null || true)" == *installed* ]]; then skip "a firtp package is installed already"; fi
 work=$(mktemp -d /tmp/firtp-dpkg.XXXXXX)
 chmod 755 "$work"
 installed=0
@@ -39,14 +39,15 @@ dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|' | grep -v '/$' > "$work/
 installed=1
 dpkg -i "$deb" > "$work/dpkg.log" 2>&1 || { cat "$work/dpkg.log"; fail "dpkg -i"; }
 echo "dpkg -i: $(dpkg-query -W -f='${Package} ${Version} ${Status}' firtp)"
-dpkg -L firtp | grep -qx "$moddir/firtp_tp.so" || fail "dpkg -L firtp does not list $moddir/firtp_tp.so"
+listed=$(dpkg -L firtp)
+grep -qx "$moddir/firtp_tp.so" <<< "$listed" || fail "dpkg -L firtp does not list $moddir/firtp_tp.so"
 while read -r f; do [ -e "$f" ] || fail "$f missing after dpkg -i"; done < "$work/files.txt"
 
 (cd "$work" && /usr/bin/firtp plan /usr/share/doc/firtp/examples/diamond.ngc --ini /usr/share/doc/firtp/examples/diamond.ini > plan.txt) ||
   fail "/usr/bin/firtp plan"
 grep -q 'all within tolerance' "$work/plan.txt" || fail "installed firtp plan"
-[ "$(man -w 9 firtp_tp)" = /usr/share/man/man9/firtp_tp.9 ] || fail "man -w 9 firtp_tp: $(man -w 9 firtp_tp 2>&1)"
-echo "installed: firtp plans the installed diamond; man 9 firtp_tp is /usr/share/man/man9/firtp_tp.9"
+[ "$(man -w 9 firtp_tp)" = /usr/share/man/man9/firtp_tp.9.gz ] || fail "man -w 9 firtp_tp: $(man -w 9 firtp_tp 2>&1)"
+echo "installed: firtp plans the installed diamond; man 9 firtp_tp is /usr/share/man/man9/firtp_tp.9.gz"
 
 if command -v halrun > /dev/null; then
   if /usr/lib/linuxcnc/realtime status > /dev/null 2>&1; then fail "another HAL session is running"; fi

@@ -15,7 +15,7 @@ echo "installed $(grep -c -- '-- Installing' "$work/install.log") files into $pr
 
 expect=(bin/firtp bin/firtp-hal bin/firtp-lcm-dump bin/firtp-tp-check bin/firtp-lcm-spy lib/firtp/firtp.so
   lib/firtp/libfirtp_hal_shim.so
-  share/man/man1/firtp.1 share/man/man9/firtp.9 share/man/man9/firtp_tp.9
+  share/man/man1/firtp.1.gz share/man/man9/firtp.9.gz share/man/man9/firtp_tp.9.gz
   share/firtp/lcm-types/block_t.lcm share/doc/firtp/README.md share/doc/firtp/LICENSE
   share/doc/firtp/examples/diamond.ngc share/doc/firtp/examples/diamond.ini share/doc/firtp/examples/hal/pins.hal
   share/doc/firtp/examples/linuxcnc/firtp_tp.ini share/doc/firtp/examples/linuxcnc/bin/firtp-headless)
@@ -40,7 +40,7 @@ cd "$work"
 got=$("$prefix/bin/firtp" --version)
 [ "$got" = "firtp $version" ] || fail "firtp --version printed '$got', expected 'firtp $version'"
 for tool in firtp-hal firtp-lcm-dump firtp-tp-check; do
-  "$prefix/bin/$tool" --version | grep -qx "$tool $version" || fail "$tool --version"
+  [ "$("$prefix/bin/$tool" --version)" = "$tool $version" ] || fail "$tool --version"
 done
 echo "--version: firtp $version on every tool"
 
@@ -65,8 +65,9 @@ grep -qE 'RO +0\.1 +firtp\.t1$' hal.txt || { cat hal.txt; fail "installed firtp-
 echo "installed firtp-hal loads the installed firtp.so by name"
 
 if command -v man > /dev/null; then
-  for page in man1/firtp.1 man9/firtp.9 man9/firtp_tp.9; do
-    MANWIDTH=80 man -l "$prefix/share/man/$page" 2>&1 | grep -q '^NAME' || fail "man -l $page"
+  for page in man1/firtp.1.gz man9/firtp.9.gz man9/firtp_tp.9.gz; do
+    text=$(MANWIDTH=80 man -l "$prefix/share/man/$page" 2>&1)  # whole, not into grep -q: SIGPIPE
+    grep -q '^NAME' <<< "$text" || fail "man -l $page"
   done
   MANPATH=$prefix/share/man man -w 9 firtp_tp > /dev/null || fail "man 9 firtp_tp with MANPATH=$prefix/share/man"
   echo "man pages render from the prefix (man 9 firtp_tp found through MANPATH)"
