@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The package really installed and removed: dpkg -i, then the installed firtp runs, man finds the
-# pages, and halrun (as nobody) loads firtp.so by name from where dpkg put it; dpkg -P then leaves
-# none of its files behind. Changes the system, so it runs only as root with FIRTP_TEST_DPKG=1
-# (`FIRTP_TEST_DPKG=1 flock /tmp/firtp-hal.lock ctest -L package`), and never where a firtp package
-# is installed already. Module files that were in LinuxCNC's module directory before (install-linuxcnc,
+# pages, and halrun (as nobody) loads firtp.so by name from where dpkg put it; dpkg -r then leaves
+# none of its files behind (nothing left to purge either). Changes the system, so it runs only as
+# root with FIRTP_TEST_DPKG=1 (`FIRTP_TEST_DPKG=1 flock /tmp/firtp-hal.lock ctest -L package`), and
+# never where a firtp package is installed already. Module files that were in LinuxCNC's module directory before (install-linuxcnc,
 # a HAL test) are put back afterwards.
 set -euo pipefail
 build=$(cd "$1" && pwd) moddir=$2
@@ -70,10 +70,12 @@ if [ -e "$moddir/firtp_tp.so" ]; then  # install-linuxcnc's way back leaves the 
   echo "uninstall-linuxcnc: leaves the package's modules to dpkg"
 fi
 
-dpkg -P firtp > "$work/dpkg.log" 2>&1 || { cat "$work/dpkg.log"; fail "dpkg -P firtp"; }
-installed=0
+dpkg -r firtp > "$work/dpkg.log" 2>&1 || { cat "$work/dpkg.log"; fail "dpkg -r firtp"; }
 left=$(while read -r f; do [ ! -e "$f" ] || echo "$f"; done < "$work/files.txt")
-[ -z "$left" ] || fail "left behind after dpkg -P: $left"
+[ -z "$left" ] || fail "left behind after dpkg -r: $left"
 [ ! -e /usr/share/doc/firtp ] && [ ! -e /usr/lib/firtp ] && [ ! -e /usr/share/firtp ] || fail "directories left behind"
-echo "dpkg -P: all $(wc -l < "$work/files.txt") files and the package's directories gone"
+status=$(dpkg-query -W -f='${Status}' firtp 2> /dev/null || true)
+[ -z "$status" ] || [ "$status" = "unknown ok not-installed" ] || fail "after dpkg -r firtp is '$status' (no conffiles: nothing should remain)"
+installed=0
+echo "dpkg -r: all $(wc -l < "$work/files.txt") files and the package's directories gone, nothing left for dpkg -P"
 echo "PASS"
