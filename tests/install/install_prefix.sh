@@ -64,6 +64,15 @@ env -u FIRTP_HAL_MODULE_PATH "$prefix/bin/firtp-hal" --no-realtime -f pins.hal >
 grep -qE 'RO +0\.1 +firtp\.t1$' hal.txt || { cat hal.txt; fail "installed firtp-hal: no param firtp.t1"; }
 echo "installed firtp-hal loads the installed firtp.so by name"
 
+# firtp-lcm-spy hands lcm-spy the installed types jar (a stand-in lcm-spy prints its CLASSPATH).
+if [ -e "$prefix/share/java/firtp_lcm_types.jar" ] && [ -e /usr/share/java/jchart2d.jar ]; then
+  mkdir fake && printf '#!/bin/sh\necho "CLASSPATH=$CLASSPATH"\n' > fake/lcm-spy && cp fake/lcm-spy fake/java
+  chmod +x fake/lcm-spy fake/java
+  spy=$(PATH=$work/fake:$PATH "$prefix/bin/firtp-lcm-spy") || fail "firtp-lcm-spy"
+  [[ "$spy" == "CLASSPATH=$prefix/share/java/firtp_lcm_types.jar"* ]] || fail "firtp-lcm-spy: $spy"
+  echo "installed firtp-lcm-spy uses the installed types jar"
+fi
+
 if command -v man > /dev/null; then
   for page in man1/firtp.1.gz man9/firtp.9.gz man9/firtp_tp.9.gz; do
     text=$(MANWIDTH=80 man -l "$prefix/share/man/$page" 2>&1)  # whole, not into grep -q: SIGPIPE
