@@ -70,7 +70,7 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME firtp)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR firtp)
-set(CPACK_PACKAGE_CONTACT "firtp developers <firtp@localhost>")
+set(CPACK_PACKAGE_CONTACT "firtp developers <firtp@localhost>")  # placeholder: the project has no address yet
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "FIR-filter corner smoothing trajectory planner for LinuxCNC")
 set(CPACK_PACKAGE_DESCRIPTION "Kinematic corner smoothing with FIR filters (Sencer, Ishizaki, Shamoto, CIRP Annals 2015):
 the HAL component firtp.so, the trajectory-planner module firtp_tp ([TRAJ]TPMOD = firtp_tp),
@@ -80,7 +80,6 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
-set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/firtp/firtp")
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
   "libc6 (>= 2.36), libstdc++6 (>= 12), libgcc-s1 (>= 3.0), libboost-program-options1.74.0, liblcm1 (>= 1.3.1)")
 if(FIRTP_LINUXCNC_ENABLED)  # the modules: rtapi_app, motmod, liblinuxcncini
