@@ -23,7 +23,9 @@
 #   rtapi_info_* (module information and parameters, read by rtapi_app with dlsym) and EXPORTS
 #   (e.g. the tp* functions a planner module provides to motmod): rtapi_app opens every module
 #   RTLD_GLOBAL, so everything else, the C++ core included, stays local to the module.
-#   The module is added to the target `install-linuxcnc` (which, without LinuxCNC, fails saying why).
+#   The module is added to the target `install-linuxcnc` (which, without LinuxCNC, fails saying why)
+#   and to `uninstall-linuxcnc`, which removes it again unless a package (dpkg) owns the file. The
+#   Debian package (cmake/packaging.cmake) is the installed way; these two are for development.
 #   Call it only when FIRTP_LINUXCNC_ENABLED.
 include_guard(GLOBAL)
 include(CheckCXXCompilerFlag)
@@ -72,6 +74,12 @@ if(FIRTP_LINUXCNC_ENABLED)
   endif()
   add_custom_target(install-linuxcnc
     COMMENT "LinuxCNC modules installed in ${FIRTP_LINUXCNC_MODULE_DIR}")
+  # the way back: FILES is filled by firtp_linuxcnc_add_module (a generator expression of the list)
+  add_custom_target(uninstall-linuxcnc
+    COMMAND ${CMAKE_COMMAND} "-DFILES=$<GENEX_EVAL:$<TARGET_PROPERTY:uninstall-linuxcnc,FIRTP_FILES>>"
+      -P ${CMAKE_CURRENT_LIST_DIR}/uninstall_linuxcnc.cmake
+    COMMENT "Removing firtp's modules from ${FIRTP_LINUXCNC_MODULE_DIR}"
+    VERBATIM)
 else()
   add_custom_target(install-linuxcnc
     COMMAND ${CMAKE_COMMAND} -E echo "install-linuxcnc: no LinuxCNC modules were built: LinuxCNC's headers are not in ${FIRTP_LINUXCNC_INCLUDE_DIR} (linuxcnc-uspace-dev) or FIRTP_LINUXCNC is OFF"
@@ -120,5 +128,6 @@ function(firtp_linuxcnc_add_module name)
     COMMENT "Installing ${FIRTP_LINUXCNC_MODULE_DIR}/${name}.so"
     VERBATIM)
   add_dependencies(install-linuxcnc install-linuxcnc-${name})
+  set_property(TARGET uninstall-linuxcnc APPEND PROPERTY FIRTP_FILES ${FIRTP_LINUXCNC_MODULE_DIR}/${name}.so)
   set_property(GLOBAL APPEND PROPERTY FIRTP_LINUXCNC_MODULES ${name})
 endfunction()

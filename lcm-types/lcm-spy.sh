@@ -6,7 +6,10 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-jar=${FIRTP_LCM_TYPES_JAR:-$here/../build/lcm-types/firtp_lcm_types.jar}
+# installed as PREFIX/bin/firtp-lcm-spy: PREFIX/share/java; in the source tree: build/
+jar=$here/../share/java/firtp_lcm_types.jar
+[[ -f $jar ]] || jar=$here/../build/lcm-types/firtp_lcm_types.jar
+jar=${FIRTP_LCM_TYPES_JAR:-$jar}
 default_url='udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608'
 
 missing() {

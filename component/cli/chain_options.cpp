@@ -15,7 +15,7 @@ po::options_description transport_flags(bool with_module) {
                     "LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (LCM's default group, this host only)");
     if (with_module)
         d.add_options()("module", po::value<std::string>()->value_name("firtp.so"),
-                        "the HAL component to load (default: ../lib/firtp.so next to this program, or $FIRTP_MODULE)");
+                        "the HAL component to load (default: $FIRTP_MODULE, else ../lib/firtp/firtp.so or ../lib/firtp.so next to this program)");
     return d;
 }
 

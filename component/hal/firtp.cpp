@@ -6,6 +6,8 @@
 //                [stream_depth=4096] [max_feed_override=1] [rate_reserve=0.2] [brake_speed=1]
 //   addf firtp.update servo-thread
 //
+// Every load-time setting, as in effect, is a read-only param: halcmd show param firtp (man 9 firtp).
+//
 // Principle of operation (see component_core.hpp): blocks come in through the firtp.block.*
 // pins with a strobe/ack handshake, or many per period through the hal_stream `block_key` that
 // the LCM bridge writes. Each is checked and planned when accepted; every period firtp.update
@@ -125,6 +127,34 @@ struct Pins {
     hal_float_t* feed_scale;                       // in: feed override (1 = programmed)
     hal_bit_t* hold;                               // in: stop on the path and wait
     hal_bit_t* abort;                              // in: stop on the path and drop the program
+};
+
+// The load-time settings as read-only HAL params (halcmd show param firtp), as in effect: after
+// the defaults and checks of settings_from_parameters.
+struct AxisParams {
+    hal_float_t max_velocity;
+    hal_float_t max_acceleration;
+    hal_float_t max_jerk;
+};
+
+struct Params {
+    hal_s32_t axes;
+    hal_bit_t fixed_chain;     // 1: the paper's chain (t1 given), 0: every move smoothed at the limits
+    hal_s32_t stages;          // of the fixed chain, 0 without it
+    hal_float_t t[firtp::max_stages];  // s, 0 unused
+    hal_float_t tolerance;
+    hal_bit_t contour;         // 1: meaning=contour, 0: corner
+    hal_s32_t period_ns;
+    hal_s32_t queue;
+    hal_s32_t max_blocks;
+    hal_s32_t plan_budget_us;
+    hal_s32_t block_key;
+    hal_s32_t state_key;
+    hal_s32_t stream_depth;
+    hal_float_t max_feed_override;
+    hal_float_t rate_reserve;
+    hal_float_t brake_speed;
+    AxisParams axis[firtp::max_axes];
 };
 
 int comp_id = -1;
@@ -276,6 +306,56 @@ int make_pins() {
     return r;
 }
 
+int make_params(const firtp::ComponentSettings& s) {
+    auto* p = static_cast<Params*>(hal_malloc(sizeof(Params)));
+    if (p == nullptr) return -ENOMEM;
+    const firtp::PlannerParameters& planner = s.planner;
+    p->axes = s.axes;
+    p->fixed_chain = planner.fixed_chain;
+    p->stages = planner.fixed_chain ? planner.filters.stages : 0;
+    for (int i = 0; i < firtp::max_stages; ++i) p->t[i] = planner.fixed_chain && i < planner.filters.stages ? planner.filters.T[i] : 0.0;
+    p->tolerance = s.default_tolerance;
+    p->contour = planner.tolerance_meaning == firtp::ToleranceMeaning::contour;
+    p->period_ns = static_cast<rtapi_s32>(period_ns);
+    p->queue = static_cast<rtapi_s32>(planner.queue_capacity);
+    p->max_blocks = s.max_blocks_per_period;
+    p->plan_budget_us = plan_budget_us;
+    p->block_key = static_cast<rtapi_s32>(block_key);
+    p->state_key = static_cast<rtapi_s32>(state_key);
+    p->stream_depth = stream_depth;
+    p->max_feed_override = planner.max_rate;
+    p->rate_reserve = planner.rate_reserve;
+    p->brake_speed = s.brake_speed;
+    int r = 0;
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->axes, comp_id, "firtp.axes");
+    r = r ? r : hal_param_bit_newf(HAL_RO, &p->fixed_chain, comp_id, "firtp.fixed-chain");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->stages, comp_id, "firtp.stages");
+    for (int i = 0; i < firtp::max_stages && r == 0; ++i)
+        r = hal_param_float_newf(HAL_RO, &p->t[i], comp_id, "firtp.t%d", i + 1);
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->tolerance, comp_id, "firtp.tolerance");
+    r = r ? r : hal_param_bit_newf(HAL_RO, &p->contour, comp_id, "firtp.contour");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->period_ns, comp_id, "firtp.period-ns");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->queue, comp_id, "firtp.queue");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->max_blocks, comp_id, "firtp.max-blocks");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->plan_budget_us, comp_id, "firtp.plan-budget-us");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->block_key, comp_id, "firtp.block-key");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->state_key, comp_id, "firtp.state-key");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->stream_depth, comp_id, "firtp.stream-depth");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->max_feed_override, comp_id, "firtp.max-feed-override");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->rate_reserve, comp_id, "firtp.rate-reserve");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->brake_speed, comp_id, "firtp.brake-speed");
+    for (int a = 0; a < axes && r == 0; ++a) {
+        const firtp::AxisLimits& limit = planner.limits.axis[a];
+        p->axis[a].max_velocity = limit.max_velocity;
+        p->axis[a].max_acceleration = limit.max_acceleration;
+        p->axis[a].max_jerk = limit.max_jerk;
+        r = r ? r : hal_param_float_newf(HAL_RO, &p->axis[a].max_velocity, comp_id, "firtp.axis.%d.max-velocity", a);
+        r = r ? r : hal_param_float_newf(HAL_RO, &p->axis[a].max_acceleration, comp_id, "firtp.axis.%d.max-acceleration", a);
+        r = r ? r : hal_param_float_newf(HAL_RO, &p->axis[a].max_jerk, comp_id, "firtp.axis.%d.max-jerk", a);
+    }
+    return r;
+}
+
 firtp::ComponentSettings settings_from_parameters() {
     firtp::ComponentSettings s;
     const std::string period_text = std::to_string(period_ns);
@@ -346,13 +426,16 @@ extern "C" int rtapi_app_main(void) {
     if (axes < 1 || axes > firtp::max_axes) return fail(("axes=" + std::to_string(axes) + ": must be 1 to 9").c_str());
     if (meaning && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
         return fail((std::string("meaning=") + meaning + ": must be corner or contour").c_str());
+    firtp::ComponentSettings settings;
     try {
-        core = new firtp::ComponentCore(settings_from_parameters());  // init only, never in the servo thread
+        settings = settings_from_parameters();
+        core = new firtp::ComponentCore(settings);  // init only, never in the servo thread
     } catch (const std::exception& e) {
         return fail(e.what());
     }
     pins = static_cast<Pins*>(hal_malloc(sizeof(Pins)));
     if (!pins || make_pins() != 0) return fail("cannot create pins");
+    if (make_params(settings) != 0) return fail("cannot create params");
     if (block_key != 0) {
         if (hal_stream_create(&block_stream, comp_id, static_cast<int>(block_key), stream_depth,
                               firtp::stream::block_types) != 0)

@@ -12,6 +12,13 @@
 // module-static: motmod's TP_STRUCT has a frozen layout, only reverse_run and the copies of the
 // position and status are kept in it.
 //
+// The jerk limit: jerk= if given, else the INI's [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK as
+// LinuxCNC master's jerk-limited planner reads them (the smallest: TpCore has one jerk for every
+// axis), else 100000. The INI is the one the `linuxcnc` launcher exports as INI_FILE_NAME, which
+// rtapi_app inherits; it is read here at load only (tp_ini.hpp).
+//
+// Load-time settings, as in effect, are read-only params: halcmd show param firtp_tp (man 9 firtp_tp).
+//
 // HAL (component firtp_tp, for measurement): pins firtp_tp.cycle-ns (tpRunCycle's time),
 // firtp_tp.plan-ns (the planning part), firtp_tp.planned (blocks planned this period),
 // firtp_tp.add-ns (the last tpAdd*), firtp_tp.adds (tpAdd* calls so far), firtp_tp.pending (moves not yet planned), firtp_tp.blocks
@@ -32,6 +39,7 @@ extern "C" {
 
 #include "tp_arena.hpp"
 #include "tp_core.hpp"
+#include "tp_ini.hpp"
 #include "module_number.hpp"
 
 #include <cmath>
@@ -56,7 +64,8 @@ RTAPI_MP_STRING(t4, "T4 in s (stages=4)");
 static int stages = 2;
 RTAPI_MP_INT(stages, "FIR stages, 1..4 (2)");
 static char* jerk = nullptr;
-RTAPI_MP_STRING(jerk, "jerk limit of every axis, machine units/s^3 (100000; 0: none)");
+RTAPI_MP_STRING(jerk, "jerk limit of every axis, machine units/s^3 (0: none); overrides the INI's [TRAJ]MAX_LINEAR_JERK "
+                      "and [AXIS_L]MAX_JERK (the smallest of those; without them 100000)");
 static char* tolerance = nullptr;
 RTAPI_MP_STRING(tolerance, "tolerance for G64 without P (and inside arcs in G61), machine units (0.05)");
 static char* chord_tol = nullptr;
@@ -93,6 +102,26 @@ struct Pins {
     hal_s32_t* depth;
     hal_s32_t* rebuilds;
     hal_s32_t* arena_kb;
+};
+
+// Where the jerk limit came from (param firtp_tp.jerk-source).
+enum JerkSource : int { jerk_default = 0, jerk_parameter = 1, jerk_ini = 2 };
+
+// The load-time settings as read-only HAL params.
+struct Params {
+    hal_float_t jerk;
+    hal_s32_t jerk_source;
+    hal_s32_t stages;
+    hal_float_t t[4];  // as given; 0: from the axis limits (or no fixed chain)
+    hal_float_t tolerance;
+    hal_float_t chord_tol;
+    hal_float_t rate_reserve;
+    hal_bit_t contour;
+    hal_s32_t queue;
+    hal_s32_t blocks;
+    hal_s32_t max_blocks;
+    hal_s32_t plan_budget_us;
+    hal_s32_t arena_mb;
 };
 
 int comp_id = -1;
@@ -234,6 +263,69 @@ int make_pins() {
         **p.pin = 0;
     }
     return 0;
+}
+
+int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
+    auto* p = static_cast<Params*>(hal_malloc(sizeof(Params)));
+    if (p == nullptr) return -1;
+    p->jerk = s.jerk;
+    p->jerk_source = source;
+    p->stages = s.stages;
+    for (std::size_t i = 0; i < 4; ++i) p->t[i] = s.filter_times[i];
+    p->tolerance = s.default_tolerance;
+    p->chord_tol = s.chord_tolerance;
+    p->rate_reserve = s.rate_reserve;
+    p->contour = s.contour_tolerance;
+    p->queue = static_cast<rtapi_s32>(s.moves);
+    p->blocks = static_cast<rtapi_s32>(s.blocks);
+    p->max_blocks = s.max_blocks_per_cycle;
+    p->plan_budget_us = plan_budget_us;
+    p->arena_mb = arena_mb;
+    int r = 0;
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->jerk, comp_id, "firtp_tp.jerk");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->jerk_source, comp_id, "firtp_tp.jerk-source");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->stages, comp_id, "firtp_tp.stages");
+    for (int i = 0; i < 4 && r == 0; ++i) r = hal_param_float_newf(HAL_RO, &p->t[i], comp_id, "firtp_tp.t%d", i + 1);
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->tolerance, comp_id, "firtp_tp.tolerance");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->chord_tol, comp_id, "firtp_tp.chord-tol");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->rate_reserve, comp_id, "firtp_tp.rate-reserve");
+    r = r ? r : hal_param_bit_newf(HAL_RO, &p->contour, comp_id, "firtp_tp.contour");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->queue, comp_id, "firtp_tp.queue");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->blocks, comp_id, "firtp_tp.blocks");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->max_blocks, comp_id, "firtp_tp.max-blocks");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->plan_budget_us, comp_id, "firtp_tp.plan-budget-us");
+    r = r ? r : hal_param_s32_newf(HAL_RO, &p->arena_mb, comp_id, "firtp_tp.arena-mb");
+    return r;
+}
+
+// jerk=, else the INI's jerk keys, else TpSettings' default; false (reported) on a bad value.
+bool choose_jerk(firtp::linuxcnc_tp::TpSettings& s, JerkSource& source) {
+    if (jerk != nullptr && *jerk != '\0') {
+        s.jerk = number(jerk, s.jerk);
+        source = jerk_parameter;
+        if (std::isnan(s.jerk) || s.jerk < 0.0) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "firtp_tp: jerk=%s: must be a number >= 0\n", jerk);
+            return false;
+        }
+        return true;
+    }
+    source = jerk_default;
+    const char* ini = std::getenv("INI_FILE_NAME");  // the linuxcnc launcher's; unset under plain halrun
+    if (ini == nullptr || *ini == '\0') return true;
+    const firtp::linuxcnc_tp::IniJerk found = firtp::linuxcnc_tp::read_ini_jerk(ini);
+    if (!found.error.empty()) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "firtp_tp: jerk limit: %s\n", found.error.c_str());
+        return false;
+    }
+    if (found.jerk == 0.0) return true;
+    s.jerk = found.jerk;
+    source = jerk_ini;
+    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: jerk %g from %s %s\n", s.jerk, ini, found.from.c_str());
+    if (!found.differs.empty())
+        rtapi_print_msg(RTAPI_MSG_ERR,
+                        "firtp_tp: one jerk limit for every axis: %g from %s; other values (%s) are not applied\n",
+                        s.jerk, found.from.c_str(), found.differs.c_str());
+    return true;
 }
 
 }  // namespace
@@ -487,7 +579,6 @@ extern "C" int rtapi_app_main(void) {
     s.stages = stages;
     const char* times[4] = {t1, t2, t3, t4};
     for (std::size_t i = 0; i < 4; ++i) s.filter_times[i] = number(times[i], 0.0);
-    s.jerk = number(jerk, 100000.0);
     s.default_tolerance = number(tolerance, 0.05);
     s.chord_tolerance = number(chord_tol, 0.001);
     s.rate_reserve = number(rate_reserve, 0.2);
@@ -501,15 +592,17 @@ extern "C" int rtapi_app_main(void) {
     s.clock_ns = now_ns;
     for (double v : s.filter_times)
         if (std::isnan(v) || v < 0.0) return fail("t1..t4 must be numbers of seconds >= 0");
-    if (std::isnan(s.jerk) || s.jerk < 0.0) return fail("jerk must be a number >= 0");
+    JerkSource source = jerk_default;
+    if (!choose_jerk(s, source)) return fail("not loaded: the jerk limit");
     try {
         core = new TpCore(s);  // at load, never in the servo thread
     } catch (const std::exception& e) {
         return fail(e.what());
     }
     if (make_pins() != 0) return fail("cannot create the firtp_tp.* pins");
-    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: %d stages, t1=%s t2=%s (0: from the axis limits), tolerance %g\n",
-                    stages, t1 ? t1 : "0", t2 ? t2 : "0", s.default_tolerance);
+    if (make_params(s, source) != 0) return fail("cannot create the firtp_tp.* params");
+    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: %d stages, t1=%s t2=%s (0: from the axis limits), tolerance %g, jerk %g\n",
+                    stages, t1 ? t1 : "0", t2 ? t2 : "0", s.default_tolerance, s.jerk);
     hal_ready(comp_id);
     return 0;
 }

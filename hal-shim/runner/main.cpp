@@ -22,7 +22,8 @@ const char* const kUsage =
     "  -n TICKS       at 'start', run TICKS base periods (with --no-realtime) or wait for them\n"
     "  --no-realtime  virtual time: 'start' runs nothing by itself; 'step N', 'sleep' and\n"
     "                 'wait MS' run whole periods at once, deterministic and fast\n"
-    "  -L DIR         look for loadrt modules in DIR (also: $FIRTP_HAL_MODULE_PATH)\n"
+    "  -L DIR         look for loadrt modules in DIR (also: $FIRTP_HAL_MODULE_PATH, then\n"
+    "                 ../lib/firtp next to this program when installed)\n"
     "  -k             keep going after an error (still exits 1)\n"
     "  -v             more messages (-v info, -vv debug)\n"
     "  --rt-prio N    run threads SCHED_FIFO at priority N (default: normal scheduling)\n"
@@ -40,6 +41,20 @@ unsigned long long number(const char* opt, const char* text) {
     std::exit(2);
   }
   return v;
+}
+
+/// Installed (PREFIX/bin/firtp-hal), loadrt also looks in PREFIX/lib/firtp, after -L and
+/// $FIRTP_HAL_MODULE_PATH: appended to the latter.
+void add_installed_module_dir() {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) return;
+  std::string dir(self, static_cast<std::size_t>(n));
+  dir = dir.substr(0, dir.find_last_of('/'));                       // PREFIX/bin
+  dir = dir.substr(0, dir.find_last_of('/')) + "/lib/firtp";        // PREFIX/lib/firtp
+  if (access((dir + "/firtp.so").c_str(), R_OK) != 0) return;
+  const char* path = std::getenv("FIRTP_HAL_MODULE_PATH");
+  setenv("FIRTP_HAL_MODULE_PATH", (path && *path ? std::string(path) + ":" + dir : dir).c_str(), 1);
 }
 
 }  // namespace
@@ -85,6 +100,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  add_installed_module_dir();
   rtapi_set_msg_level(verbose >= 2 ? RTAPI_MSG_DBG : verbose == 1 ? RTAPI_MSG_INFO : RTAPI_MSG_ERR);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);

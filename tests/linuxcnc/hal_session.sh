@@ -1,8 +1,8 @@
-# Sourced by the real-LinuxCNC HAL tests, with $module (this build's LinuxCNC firtp.so, or none)
+# Sourced by the real-LinuxCNC HAL tests, with $module (this build's LinuxCNC firtp.so or firtp_tp.so, or none)
 # and $moddir (rtapi_app's module directory) set: skips (exit 77) where LinuxCNC is missing, makes
 # $work, defines as_user (halrun as `nobody` when root: rtapi_app refuses root; setpriv, no account
 # to create; rtapi_app is setuid root and drops to the real uid itself), places this build's
-# firtp.so where rtapi_app looks (`loadrt /path/firtp` is refused) and puts back what was there on
+# module where rtapi_app looks (`loadrt /path/firtp` is refused) and puts back what was there on
 # exit, and waits for another HAL session to end: only one can exist per machine (ctest runs these
 # under RESOURCE_LOCK linuxcnc). run_halrun FILE (at the end) runs halrun -f FILE: it sets session=1,
 # so the exit trap runs `halrun -U`, and runs halrun in the background so a signal reaches the trap.
@@ -13,7 +13,8 @@ command -v halrun > /dev/null || skip "halrun not found (linuxcnc-uspace)"
 realtime=/usr/lib/linuxcnc/realtime
 
 work=$(mktemp -d /tmp/firtp-lcnc-hal.XXXXXX)
-installed=$moddir/firtp.so
+module_name=$(basename "$module")
+installed=$moddir/$module_name
 placed=0 session=0 halrun_pid=
 if [ "$(id -u)" -eq 0 ]; then
   uid=$(id -u nobody 2> /dev/null || echo 65534) gid=$(id -g nobody 2> /dev/null || echo 65534)
@@ -29,7 +30,7 @@ cleanup() {
   if [ -n "$halrun_pid" ]; then kill "$halrun_pid" 2> /dev/null || true; fi
   if ((session)) && running; then as_user timeout 20 halrun -U > /dev/null 2>&1 || echo "halrun -U failed" >&2; fi
   if ((placed)); then
-    if [ -e "$work/firtp.so.before" ]; then mv -f "$work/firtp.so.before" "$installed"; else rm -f "$installed"; fi
+    if [ -e "$work/$module_name.before" ]; then mv -f "$work/$module_name.before" "$installed"; else rm -f "$installed"; fi
   fi
   rm -rf "$work"
   exit $status
@@ -41,9 +42,9 @@ trap 'exit 1' INT TERM
 if [ -e "$installed" ] && cmp -s "$module" "$installed"; then
   echo "$installed is this build's already"
 elif [ -w "$moddir" ]; then
-  if [ -e "$installed" ]; then cp -p "$installed" "$work/firtp.so.before"; fi
+  if [ -e "$installed" ]; then cp -p "$installed" "$work/$module_name.before"; fi
   placed=1
-  cp "$module" "$moddir/.firtp.so.test" && mv -f "$moddir/.firtp.so.test" "$installed"
+  cp "$module" "$moddir/.$module_name.test" && mv -f "$moddir/.$module_name.test" "$installed"
 else
   skip "$installed is not this build's and $moddir is not writable: cmake --build BUILD --target install-linuxcnc (as root), or run as root"
 fi

@@ -65,7 +65,10 @@ std::filesystem::path default_module_path() {
     if (const char* path = std::getenv("FIRTP_MODULE")) return path;
     std::error_code error;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-    return error ? std::filesystem::path("firtp.so") : self.parent_path().parent_path() / "lib" / "firtp.so";
+    if (error) return "firtp.so";
+    // installed: PREFIX/bin/firtp -> PREFIX/lib/firtp/firtp.so; in the build tree: build/lib/firtp.so
+    const std::filesystem::path lib = self.parent_path().parent_path() / "lib";
+    return std::filesystem::exists(lib / "firtp" / "firtp.so", error) ? lib / "firtp" / "firtp.so" : lib / "firtp.so";
 }
 
 ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,

@@ -10,7 +10,7 @@
 
 namespace firtp {
 
-// firtp.so next to this program's build (../lib/firtp.so), or $FIRTP_MODULE.
+// $FIRTP_MODULE, else firtp.so next to this program: installed ../lib/firtp/firtp.so, built ../lib/firtp.so.
 std::filesystem::path default_module_path();
 
 // firtp.so settings beyond the machine's (loadrt firtp queue=... max_blocks=...).

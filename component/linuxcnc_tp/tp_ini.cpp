@@ -1,0 +1,64 @@
+// tp_ini.cpp - see tp_ini.hpp.
+#include "tp_ini.hpp"
+
+#include "inifile.hh"  // LinuxCNC's IniFile (liblinuxcncini), the reader LinuxCNC itself uses
+#include "module_number.hpp"
+
+#include <cctype>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace firtp::linuxcnc_tp {
+namespace {
+
+constexpr const char* axis_letters = "XYZABCUVW";
+
+// The axes [TRAJ]COORDINATES names (each once), or all nine.
+std::string axes_of(IniFile& ini) {
+    const char* coordinates = ini.Find("COORDINATES", "TRAJ");
+    if (coordinates == nullptr) return axis_letters;
+    std::string axes;
+    for (const char* c = coordinates; *c; ++c) {
+        const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+        if (std::string(axis_letters).find(upper) != std::string::npos && axes.find(upper) == std::string::npos)
+            axes += upper;
+    }
+    return axes.empty() ? axis_letters : axes;
+}
+
+}  // namespace
+
+IniJerk read_ini_jerk(const char* path) {
+    IniJerk out;
+    IniFile ini;  // errMask 0: no exceptions
+    if (!ini.Open(path)) {
+        out.error = std::string(path) + ": cannot be opened";
+        return out;
+    }
+    std::vector<std::pair<std::string, std::string>> keys{{"TRAJ", "MAX_LINEAR_JERK"}};  // section, key
+    for (char axis : axes_of(ini)) keys.emplace_back(std::string("AXIS_") + axis, "MAX_JERK");
+    for (const auto& [section, key] : keys) {
+        int line = 0;
+        const char* text = ini.Find(key.c_str(), section.c_str(), 1, &line);
+        if (text == nullptr) continue;
+        const std::string where = "[" + section + "]" + key + " = " + text + " (line " + std::to_string(line) + ")";
+        const std::optional<double> value = module_number(text);
+        if (!value || *value < 0.0) {
+            out.error = std::string(path) + ":" + std::to_string(line) + ": [" + section + "]" + key + " = '" + text +
+                        "': not a number >= 0 (units/s^3; 0: not set)";
+            break;
+        }
+        if (*value == 0.0) continue;
+        if (out.jerk == 0.0 || *value < out.jerk) {
+            if (out.jerk != 0.0) out.differs += (out.differs.empty() ? "" : ", ") + out.from;
+            out.jerk = *value;
+            out.from = where;
+        } else if (*value != out.jerk) {
+            out.differs += (out.differs.empty() ? "" : ", ") + where;
+        }
+    }
+    return out;
+}
+
+}  // namespace firtp::linuxcnc_tp

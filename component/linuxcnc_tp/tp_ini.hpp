@@ -1,0 +1,22 @@
+// tp_ini: the jerk limit firtp_tp takes from the machine's INI, at load (rtapi_app_main) only.
+// LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK; so does
+// firtp_tp. TpCore applies one jerk limit to every axis, so the smallest value given is taken.
+// Built into the firtp_tp module only: it reads with LinuxCNC's own INI reader (liblinuxcncini).
+#pragma once
+
+#include <string>
+
+namespace firtp::linuxcnc_tp {
+
+struct IniJerk {
+    double jerk = 0.0;     // the smallest positive value of the keys below; 0: none of them set
+    std::string from;      // the key that gave it, e.g. "[TRAJ]MAX_LINEAR_JERK = 20000 (line 70)"
+    std::string differs;   // keys with other values, which firtp_tp does not apply (one jerk for all axes)
+    std::string error;     // unreadable file or a value that is not a number >= 0: file, line, key, text
+};
+
+// [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK for the letters L of [TRAJ]COORDINATES (X..W, all nine
+// without it) from the INI at `path`. 0 counts as not set, as in LinuxCNC master.
+IniJerk read_ini_jerk(const char* path);
+
+}  // namespace firtp::linuxcnc_tp

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# docs/man: each page renders with groff without a warning (-ww) and with man -l; firtp(9) names every
+# module parameter, pin and param that component/hal/firtp.cpp creates, firtp_tp(9) those of
+# component/linuxcnc_tp/tp_module.cpp, firtp(1) every firtp command and the exit codes.
+set -euo pipefail
+src=$1
+command -v groff > /dev/null || { echo "SKIPPED: groff not installed (groff-base)"; exit 77; }
+fail=0
+for page in "$src"/docs/man/*.[19]; do
+  warnings=$(groff -man -ww -z "$page" 2>&1 || true)
+  [ -z "$warnings" ] || { echo "FAIL: $page: groff warns:"; echo "$warnings"; fail=1; }
+  if command -v man > /dev/null; then
+    text=$(MANWIDTH=80 man -l "$page" 2> "${TMPDIR:-/tmp}/man_pages.$$" | col -b)
+    [ ! -s "${TMPDIR:-/tmp}/man_pages.$$" ] || { echo "FAIL: man -l $page:"; cat "${TMPDIR:-/tmp}/man_pages.$$"; fail=1; }
+    rm -f "${TMPDIR:-/tmp}/man_pages.$$"
+    grep -q '^NAME' <<< "$text" || { echo "FAIL: man -l $page renders no NAME section"; fail=1; }
+  fi
+  echo "$(basename "$page"): $(groff -man -Tutf8 "$page" 2>/dev/null | wc -l) lines, no warnings"
+done
+
+# The names a page must mention, from the source: RTAPI_MP_*(name, ...), "comp.pin-name" strings.
+plain() { groff -man -Tascii -P-c -P-b -P-u "$1" 2> /dev/null; }
+check_names() {
+  local page=$1 source=$2 comp=$3 text missing=()
+  text=$(plain "$page")
+  while read -r name; do
+    grep -qF -- "$name" <<< "$text" || missing+=("$name")
+  done < <({
+    grep -oE 'RTAPI_MP_[A-Z]+\(([a-z_0-9]+)' "$source" | sed -E 's/.*\(//'
+    # pins and params: "comp.x.y" literals; %d becomes N, a bare list entry "name" gets comp.
+    grep -oE "\"$comp\\.[a-z0-9%.-]+\"" "$source" | tr -d '"' | grep -v '%s' | sed -e 's/%d/N/g' -e 's/\.tN$/.t1/'
+  } | sort -u)
+  if ((${#missing[@]})); then echo "FAIL: $(basename "$page") does not mention: ${missing[*]}"; return 1; fi
+  echo "$(basename "$page"): names every module parameter, pin and param of $(basename "$source")"
+}
+check_names "$src/docs/man/firtp.9" "$src/component/hal/firtp.cpp" firtp || fail=1
+check_names "$src/docs/man/firtp_tp.9" "$src/component/linuxcnc_tp/tp_module.cpp" firtp_tp || fail=1
+# firtp_tp's pins are made from a list of suffixes: each must appear as firtp_tp.SUFFIX
+tp_text=$(plain "$src/docs/man/firtp_tp.9")
+for suffix in $(grep -oE '\{&pins->[a-z_]+, "[a-z-]+"\}' "$src/component/linuxcnc_tp/tp_module.cpp" | sed -E 's/.*"(.*)".*/\1/'); do
+  grep -qF "firtp_tp.$suffix" <<< "$tp_text" || { echo "FAIL: firtp_tp.9 does not mention pin firtp_tp.$suffix"; fail=1; }
+done
+
+one=$(plain "$src/docs/man/firtp.1")
+for word in plan run serve host simulate "EXIT STATUS" "--version"; do
+  grep -qF -- "$word" <<< "$one" || { echo "FAIL: firtp.1 does not mention $word"; fail=1; }
+done
+grep -qE '^ +3 +' <<< "$one" || { echo "FAIL: firtp.1 lists no exit status 3"; fail=1; }
+exit $fail
