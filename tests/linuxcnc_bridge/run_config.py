@@ -105,7 +105,9 @@ def main():
     argv = sys.argv[1:]
     checks = argv[argv.index("--") + 1:] if "--" in argv else []
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
-    a.program = os.path.abspath(a.program)
+    for name in ("program", "bridge", "module", "states", "check_tool", "host", "plan", "dump"):
+        if getattr(a, name) not in (None, "none"):
+            setattr(a, name, os.path.abspath(getattr(a, name)))
 
     lcnc = lcnc_run.LinuxCNC()
     if not lcnc.available():
