@@ -4,7 +4,6 @@
 
 #include "hal_pin_access.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -123,26 +122,46 @@ void MotionPublisher::publish_state(std::int64_t tick, std::int32_t line, const 
     if (++periods_since_status_ >= options_.status_every) status_due_ = true;
 }
 
+// Lost periods: LinuxCNC 2.9's hal_stream_write numbers only the records it wrote, and counts
+// the ones it could not (a full stream) in hal_stream_num_overruns; hal_stream(3) says the number
+// also rises on a failed write, so a jump in it counts too (and is not counted twice). A full
+// stream loses the periods after its newest record, so the overruns found with the records present
+// are placed after them: the ticks stay the servo periods, the count is exact.
 void MotionPublisher::poll() {
     hal_stream_data record[HAL_STREAM_MAX_PINS];
     double position[max_axes] = {};
+    const int present = hal_stream_depth(&stream_->stream);
+    const std::int64_t overruns = hal_stream_num_overruns(&stream_->stream);
+    std::int64_t jumps = 0;  // periods missing between sample numbers, this poll
     unsigned sample = 0;
-    while (hal_stream_read(&stream_->stream, record, &sample) == 0) {
-        // The sampler numbers every period it tried to write, written or not (hal_stream(3)).
-        const std::int64_t tick =
-            last_tick_ < 0 ? sample : last_tick_ + static_cast<std::uint32_t>(sample - static_cast<std::uint32_t>(last_tick_));
-        if (last_tick_ >= 0 && tick != last_tick_ + 1) {
-            lost_ += tick - last_tick_ - 1;
-            history_ = 0;  // no differences across the gap
-            hal_pin::set(pins_->lost, static_cast<std::uint32_t>(lost_));
-            status_due_ = true;
+    for (int i = 0; i < present && hal_stream_read(&stream_->stream, record, &sample) == 0; ++i) {
+        std::int64_t tick = last_tick_ + 1;
+        if (last_tick_ < 0) {
+            tick = sample;  // the first record's number: the sampler's periods so far
+        } else if (const std::uint32_t step = sample - last_sample_; step != 1) {
+            jumps += step - 1;
+            tick += step - 1;
+            lose(step - 1);
         }
+        last_sample_ = sample;
         last_tick_ = tick;
         for (int a = 0; a < options_.axes; ++a) position[a] = record[a].f;
         publish_state(tick, record[options_.axes].s, position);
     }
+    if (const std::int64_t unplaced = overruns - overruns_seen_ - jumps; unplaced > 0) {
+        last_tick_ += unplaced;
+        lose(unplaced);
+    }
+    overruns_seen_ = overruns;
     if (motion_state() != last_state_) status_due_ = true;
     if (status_due_) publish_status();
+}
+
+void MotionPublisher::lose(std::int64_t periods) {
+    lost_ += periods;
+    history_ = 0;  // no differences across the gap
+    hal_pin::set(pins_->lost, static_cast<std::uint32_t>(lost_));
+    status_due_ = true;
 }
 
 // Machine off: disabled; in position: idle; otherwise moving.
@@ -164,12 +183,9 @@ void MotionPublisher::publish_status() {
     last_state_ = motion_state();
     s.state = last_state_;
     s.feed_scale = hal_pin::get(pins_->feed_scale);
-    // The sampler's own count too: a write it could not make (hal_stream_num_overruns).
-    const std::int64_t overruns = hal_stream_num_overruns(&stream_->stream);
-    const std::int64_t lost = std::max(lost_, overruns);
-    if (lost > 0) {
+    if (lost_ > 0) {
         s.error_code = firtp_lcm::status_t::ERROR_LOST_STATE;
-        s.error_text = std::to_string(lost) + " axis states lost: the sampler's stream was full (the bridge fell "
+        s.error_text = std::to_string(lost_) + " axis states lost: the sampler's stream was full (the bridge fell "
                        "behind the servo thread; raise loadrt sampler depth=)";
     }
     s.rejected = 0;

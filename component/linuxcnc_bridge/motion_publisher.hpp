@@ -2,9 +2,9 @@
 // LinuxCNC's `sampler` copies the planner's output (axis.L.pos-cmd) and motion.program-line into
 // its hal_stream every servo period on the real-time side; this drains that stream and publishes
 // every period as FIRTP_AXIS_STATE (and every Nth as FIRTP_AXIS_STATE_LIVE), and the motion
-// status as FIRTP_STATUS. Nothing is dropped silently: the stream's sample numbers and overrun
-// count show every record the sampler could not write (a full stream), reported as
-// ERROR_LOST_STATE and on the pin `lost`.
+// status as FIRTP_STATUS. Nothing is dropped silently: the stream's overrun count (and sample
+// numbers) show every period the sampler could not write (a full stream); they are skipped in the
+// ticks, reported as ERROR_LOST_STATE with their count and on the pin `lost`.
 #pragma once
 
 #include <firtp/messages.hpp>
@@ -48,6 +48,7 @@ private:
     void publish_state(std::int64_t tick, std::int32_t line, const double* position);
     void publish_status();
     std::int8_t motion_state() const;
+    void lose(std::int64_t periods);
 
     lcm::LCM* lcm_;
     MotionOptions options_;
@@ -55,7 +56,9 @@ private:
     Pins* pins_ = nullptr;
     struct Stream;
     Stream* stream_ = nullptr;
-    std::int64_t last_tick_ = -1;     // 64-bit extension of the stream's sample number
+    std::int64_t last_tick_ = -1;     // servo period of the newest record published
+    std::uint32_t last_sample_ = 0;   // its sample number in the stream
+    std::int64_t overruns_seen_ = 0;  // the stream's overrun count already accounted for
     std::array<double, max_axes> previous_position_{}, previous_velocity_{};
     int history_ = 0;                 // consecutive samples behind the current one (0, 1, 2)
     std::int64_t lost_ = 0;

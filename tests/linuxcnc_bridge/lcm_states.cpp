@@ -68,7 +68,8 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
         std::cerr << "firtp-bridge-states: cannot write " << out_path << "\n";
         return 1;
     }
-    long states = 0, statuses = 0, corrupted = 0, seq_gaps = 0, tick_gaps = 0, lost_reported = 0;
+    long states = 0, statuses = 0, corrupted = 0, seq_gaps = 0, tick_gaps = 0, lost_reported = 0, missing = 0;
+    std::string last_lost_text;
     std::int64_t last_seq = 0, last_tick = -1, first_tick = -1;
     int last_line = 0;
     std::string first_problem;
@@ -84,6 +85,7 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
                 problem("status: " + *r.problem);
             } else if (r.message.error_code == firtp_lcm::status_t::ERROR_LOST_STATE) {
                 ++lost_reported;
+                last_lost_text = r.message.error_text;
                 problem("status seq " + std::to_string(r.message.seq) + ": " + r.message.error_text);
             }
             continue;
@@ -104,6 +106,7 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
         if (first_tick < 0) first_tick = m.tick;
         if (last_tick >= 0 && m.tick != last_tick + 1) {
             ++tick_gaps;
+            missing += m.tick - last_tick - 1;
             problem("axis state tick " + std::to_string(m.tick) + " after " + std::to_string(last_tick));
             for (std::int64_t t = last_tick + 1; t < m.tick && t - last_tick < 1000000; ++t) std::fputs("overrun\n", out);
         }
@@ -124,8 +127,10 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
     std::printf("states       %ld (seq 1..%lld, ticks %lld..%lld), last line %d\n", states,
                 static_cast<long long>(last_seq), static_cast<long long>(first_tick), static_cast<long long>(last_tick),
                 last_line);
-    std::printf("gaps         %ld in seq, %ld in ticks; %ld corrupted; %ld statuses, %ld reporting lost states\n",
-                seq_gaps, tick_gaps, corrupted, statuses, lost_reported);
+    std::printf("gaps         %ld in seq, %ld in ticks (%ld periods missing); %ld corrupted; %ld statuses, %ld "
+                "reporting lost states\n",
+                seq_gaps, tick_gaps, missing, corrupted, statuses, lost_reported);
+    if (!last_lost_text.empty()) std::printf("last report  %s\n", last_lost_text.c_str());
     if (!first_problem.empty()) {
         std::printf("FAIL: %s\n", first_problem.c_str());
         return 1;
