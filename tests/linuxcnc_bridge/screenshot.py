@@ -9,7 +9,7 @@ Like run_config.py (a scratch copy, modules placed for the run, LinuxCNC as `nob
 network namespace for LCM) but with the configuration's own display, AXIS. lcm-spy
 (lcm-types/lcm-spy.sh) subscribes; `bin/firtp-headless -ini INI`, started beside AXIS as a plain
 client of LinuxCNC, resets E-stop, homes and runs the program; S seconds after the program line
-first changes, the screen is captured (xwd, convert). AXIS is closed with `axis-remote --quit`.
+first changes, the screen is captured (xwd, convert). Closing AXIS (SIGTERM) ends the session.
 The check (exit 1 otherwise): the AXIS and LCM Spy windows exist, the program completed, and
 firtp-lcm-bridge published states. Exit 77 where Xvfb, xwd, lcm-spy, LinuxCNC or root are missing.
 """
@@ -33,8 +33,10 @@ ip link set lo up && ip route add 224.0.0.0/4 dev lo || exit 3
 FIRTP_LCM_TYPES_JAR="$JAR" setsid "$ROOT/lcm-types/lcm-spy.sh" > "$WORK/lcm-spy.log" 2>&1 & spy=$!
 (cd "$CONFIG" && $AS_USER env HOME="$WORK" DISPLAY="$DISPLAY" PATH="$PATH" timeout 180 linuxcnc "$INI") > "$WORK/linuxcnc.log" 2>&1 & lcnc=$!
 echo "start at $(date +%T)" > "$WORK/times.log"
-for _ in $(seq 900); do  # AXIS up (it answers axis-remote) and done loading OPEN_FILE
-  $AS_USER env HOME="$WORK" DISPLAY="$DISPLAY" axis-remote --ping > /dev/null 2>&1 && break
+# AXIS up: its main window ("FILE - AXIS VERSION on MACHINE") is on the screen; then it loads OPEN_FILE.
+# (axis-remote cannot be used: Tk's `send` refuses an X server without access control, Xvfb -ac.)
+for _ in $(seq 900); do
+  xwininfo -root -tree -display "$DISPLAY" 2> /dev/null | grep -q ' - AXIS ' && break
   sleep 0.1
 done
 sleep 3
@@ -52,7 +54,8 @@ xwd -root -silent -display "$DISPLAY" > "$WORK/screen.xwd"
 echo "screenshot at $(date +%T)" >> "$WORK/times.log"
 wait $driver; echo "driver exit $?" >> "$WORK/driver.log"
 echo "driver done at $(date +%T)" >> "$WORK/times.log"
-$AS_USER env HOME="$WORK" DISPLAY="$DISPLAY" axis-remote --quit > /dev/null 2>&1
+axis=$(pgrep -u "$(id -u nobody)" -fx "/usr/bin/python3 /usr/bin/axis -ini $INI")  # this run's AXIS
+[ -n "$axis" ] && kill -TERM $axis  # the launcher then shuts LinuxCNC down
 for _ in $(seq 300); do kill -0 $lcnc 2> /dev/null || break; sleep 0.1; done
 kill -TERM $lcnc 2> /dev/null; wait $lcnc
 echo "linuxcnc done at $(date +%T)" >> "$WORK/times.log"
@@ -72,7 +75,7 @@ def main():
     parser.add_argument("--at", default="3", help="seconds into the program")
     parser.add_argument("--keep", help="copy the scratch directory (logs) here")
     a = parser.parse_args()
-    for tool in ("Xvfb", "xwd", "xwininfo", "convert", "lcm-spy", "linuxcnc", "axis-remote"):
+    for tool in ("Xvfb", "xwd", "xwininfo", "convert", "lcm-spy", "linuxcnc", "pgrep"):
         if shutil.which(tool) is None:
             print("SKIPPED: %s not found (xvfb, x11-apps, imagemagick, liblcm-java, linuxcnc-uspace)" % tool)
             return SKIP
@@ -93,7 +96,7 @@ def main():
         text = lcnc_run.set_ini(text, "DISPLAY", "DISPLAY", "axis")  # the user's display; firtp-headless drives
         open(ini, "w").write(text)
         with open(os.path.join(work, ".axisrc"), "w") as f:  # AXIS right of lcm-spy
-            f.write("root_window.tk.call('wm', 'geometry', '.', '1290x1000+620+0')\n")
+            f.write("root_window.tk.call('wm', 'geometry', '.', '1100x1040+810+0')\n")
         for root, dirs, files in os.walk(work):
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
