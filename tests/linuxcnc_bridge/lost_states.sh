@@ -1,16 +1,19 @@
 #!/bin/bash
-# A bridge that falls behind loses periods only as counted ones: firtp-lcm-bridge --mode motion on a
-# 1 ms thread with a 50-record sampler stream is stopped (SIGSTOP) for 0.5 s; the stream overflows,
-# and what reaches LCM must show it: a gap in the ticks (the seq stays consecutive), a status with
-# error 7 naming as many lost periods as the gap, the pin firtp-lcm-bridge.lost equal. Then SIGTERM
-# ends it cleanly (hal_exit: halrun unloads without complaint).
-#   lost_states.sh BRIDGE STATES-TOOL      (skips, 77, without LinuxCNC, root or unshare -n)
+# A bridge that falls behind loses periods only as counted ones: firtp-lcm-bridge on a 1 ms thread
+# with a 50-record stream is stopped (SIGSTOP) for 0.5 s; the stream overflows, and what reaches
+# LCM must show it: a gap in the ticks (the seq stays consecutive), a status with error 7 naming as
+# many lost periods as the gap, and the writer's count equal (mode motion: the sampler's stream,
+# pin firtp-lcm-bridge.lost; with FIRTP_SO, mode firtp: firtp.so's axis-state stream, pin
+# firtp.state-overruns). Then SIGTERM ends it cleanly (hal_exit: halrun unloads without complaint).
+#   lost_states.sh BRIDGE STATES-TOOL [FIRTP_SO]     (skips, 77, without LinuxCNC, root or unshare -n)
 set -u
-bridge=$1 states=$2
+bridge=$1 states=$2 firtp_so=${3:-}
+moddir=/usr/lib/linuxcnc/modules
 skip() { echo "SKIPPED: $*"; exit 77; }
 [ "$bridge" != none ] && [ -x "$bridge" ] || skip "firtp-lcm-bridge was not built (FIRTP_LINUXCNC)"
 command -v halrun > /dev/null || skip "halrun not found (linuxcnc-uspace)"
 [ "$(id -u)" -eq 0 ] && unshare -n true 2> /dev/null || skip "needs root and unshare -n (LCM multicast in a private namespace)"
+[ "$firtp_so" != none ] || skip "the LinuxCNC firtp.so was not built (FIRTP_LINUXCNC)"
 
 work=$(mktemp -d /tmp/firtp-lcm-lost.XXXXXX)
 uid=$(id -u nobody) gid=$(id -g nobody)
@@ -18,6 +21,9 @@ as_user() { setpriv --reuid="$uid" --regid="$gid" --clear-groups env HOME="$work
 cleanup() {
   local status=$?
   if /usr/lib/linuxcnc/realtime status > /dev/null 2>&1; then as_user timeout 20 halrun -U > /dev/null 2>&1; fi
+  if [ -n "$firtp_so" ]; then  # put back the module directory's firtp.so
+    if [ -e "$work/firtp.so.before" ]; then mv -f "$work/firtp.so.before" "$moddir/firtp.so"; else rm -f "$moddir/firtp.so"; fi
+  fi
   rm -rf "$work"
   exit $status
 }
@@ -31,11 +37,24 @@ sleep 0.5; pid=$(pgrep -f '^firtp-lcm-bridge --mode'); kill -STOP $pid; sleep 0.
 halcmd getp firtp-lcm-bridge.lost > lost.txt
 PAUSE
 chmod +x "$work/pause"
-cat > "$work/lost.hal" <<'HAL'
+if [ -z "$firtp_so" ]; then
+  counter=firtp-lcm-bridge.lost
+  writer='loadrt sampler depth=50 cfg=fffs
+addf sampler.0 servo-thread'
+  mode=motion
+else
+  counter=firtp.state-overruns
+  writer='loadrt firtp axes=3 t1=0.1 t2=0.05 stream_depth=50
+addf firtp.update servo-thread'
+  mode=firtp
+  [ -e "$moddir/firtp.so" ] && cp -p "$moddir/firtp.so" "$work/firtp.so.before"
+  cp "$firtp_so" "$moddir/.firtp.so.test" && mv -f "$moddir/.firtp.so.test" "$moddir/firtp.so"
+fi
+sed -i "s/^halcmd getp .*/halcmd getp $counter > lost.txt/" "$work/pause"
+cat > "$work/lost.hal" <<HAL
 loadrt threads name1=servo-thread period1=1000000
-loadrt sampler depth=50 cfg=fffs
-addf sampler.0 servo-thread
-loadusr -W firtp-lcm-bridge --mode motion --axes 3 --period-ns 1000000
+$writer
+loadusr -W firtp-lcm-bridge --mode $mode --axes 3 --period-ns 1000000
 start
 loadusr -w ./pause
 unloadusr firtp-lcm-bridge
@@ -61,12 +80,12 @@ missing=$(sed -n 's/.*(\([0-9]*\) periods missing).*/\1/p' <<< "$out")
 seq_gaps=$(sed -n 's/^gaps *\([0-9]*\) in seq.*/\1/p' <<< "$out")
 reported=$(sed -n 's/^last report *\([0-9]*\) axis states lost.*/\1/p' <<< "$out")
 pin=$(tr -d '[:space:]' < "$work/lost.txt")
-echo "missing periods $missing, last status reports $reported, pin lost = $pin, seq gaps $seq_gaps"
+echo "missing periods $missing, last status reports $reported, $counter = $pin, seq gaps $seq_gaps"
 fail=0
 [ "${missing:-0}" -gt 0 ] || { echo "FAIL: no period was lost: the test did not overflow the stream"; fail=1; }
 [ "${seq_gaps:-1}" -eq 0 ] || { echo "FAIL: the axis-state seq has gaps (LCM lost messages)"; fail=1; }
 [ "${reported:-x}" = "${missing:-y}" ] || { echo "FAIL: the status reports ${reported:-nothing}, the ticks miss $missing"; fail=1; }
-[ "$pin" = "${missing:-y}" ] || { echo "FAIL: firtp-lcm-bridge.lost is $pin, the ticks miss $missing"; fail=1; }
+[ "$pin" = "${missing:-y}" ] || { echo "FAIL: $counter is $pin, the ticks miss $missing"; fail=1; }
 grep -q "axis states published" "$work/halrun.log" || { echo "FAIL: the bridge did not exit cleanly on unload"; fail=1; }
 [ $fail -eq 0 ] && echo PASS
 exit $fail
