@@ -65,7 +65,7 @@ MotionPublisher::MotionPublisher(lcm::LCM& lcm, const MotionOptions& options) : 
     const std::string cfg = motion_sampler_cfg(options.axes);
     std::string why;
     if (hal_stream_attach(&stream_->stream, comp_id_, sampler_shmem_key + options.sampler_channel, nullptr) != 0) {
-        why = "no sampler channel " + std::to_string(options.sampler_channel) + " (loadrt sampler depth=4000 cfg=" +
+        why = "no sampler channel " + std::to_string(options.sampler_channel) + " (loadrt sampler depth=16000 cfg=" +
               cfg + " before loadusr)";
     } else {
         std::string found;

@@ -8,8 +8,9 @@ headless, and check what firtp-lcm-bridge published over LCM.
 
 CONFIG_DIR's INI is copied into a scratch directory with [DISPLAY]DISPLAY = firtp-headless (no
 screen: E-stop reset, machine on, home, run OPEN_FILE, exit) and the bridge in its bin/. With
---host (firtp.so fed by the LCM bridge), OPEN_FILE is `M101`, a user M-code that runs
-`firtp host NGC --ini INI` and that task waits for; otherwise OPEN_FILE is NGC itself.
+--host (firtp.so fed by the LCM bridge), OPEN_FILE stays the configuration's (send_diamond.ngc:
+its M101, a user M-code that task waits for, runs `firtp host $FIRTP_HOST_PROGRAM --ini INI`, here
+NGC, with `firtp` from bin/), as a user runs it; otherwise OPEN_FILE is NGC itself.
 
 Everything runs in a private network namespace (`unshare -n`, loopback with a multicast route):
 the LCM subscriber `firtp-bridge-states record` and `lcm-logger` start first, then `linuxcnc -r`
@@ -56,17 +57,9 @@ def prepare(work, a):
     text = lcnc_run.set_ini(text, "FIRTP_RUN", "RESULT", "result.json")
     text = lcnc_run.set_ini(text, "FIRTP_RUN", "TIMEOUT", "60")
     if a.host:
-        # M101: the LCM host sends the program to firtp.so; task waits until it exits
-        script = os.path.join(config, "M101")
-        with open(script, "w") as f:
-            f.write("#!/bin/sh\n%s host %s --ini %s --csv %s/host.csv < /dev/null > %s/host.log 2>&1\n"
-                    "echo $? > %s/host.status\n" % (a.host, os.path.join(config, "program.ngc"), ini, config,
-                                                    config, config))
-        os.chmod(script, 0o755)
-        with open(os.path.join(config, "run_host.ngc"), "w") as f:
-            f.write("M101 (firtp host: the program over LCM into firtp.so)\nM2\n")
-        text = lcnc_run.set_ini(text, "DISPLAY", "OPEN_FILE", "run_host.ngc")
-        text = lcnc_run.set_ini(text, "RS274NGC", "USER_M_PATH", config)
+        # As a user runs it: OPEN_FILE (send_diamond.ngc) calls the configuration's M101, which
+        # runs `firtp host $FIRTP_HOST_PROGRAM` from the PATH (bin/ here); task waits for it.
+        shutil.copy(a.host, os.path.join(config, "bin", "firtp"))
     else:
         text = lcnc_run.set_ini(text, "DISPLAY", "OPEN_FILE", "program.ngc")
     open(ini, "w").write(text)
@@ -80,7 +73,7 @@ recorder=$!
 logger=
 if command -v lcm-logger > /dev/null; then lcm-logger --quiet -f "$WORK/lcm-logger.lcmlog" > "$WORK/lcm-logger.out" 2>&1 & logger=$!; fi
 sleep 0.5
-(cd "$CONFIG" && $AS_USER env HOME="$CONFIG" PATH="$PATH" timeout 120 linuxcnc -r "$INI") > "$WORK/linuxcnc.log" 2>&1
+(cd "$CONFIG" && $AS_USER env HOME="$CONFIG" PATH="$PATH" FIRTP_HOST_PROGRAM="$FIRTP_HOST_PROGRAM" timeout 120 linuxcnc -r "$INI") > "$WORK/linuxcnc.log" 2>&1
 status=$?
 sleep 0.3
 kill -INT $recorder; wait $recorder
@@ -135,7 +128,8 @@ def main():
         for root, dirs, files in os.walk(work):
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
-        env = dict(os.environ, STATES=a.states, WORK=work, CONFIG=config, INI=ini, AS_USER=" ".join(prefix))
+        env = dict(os.environ, STATES=a.states, WORK=work, CONFIG=config, INI=ini, AS_USER=" ".join(prefix),
+                   FIRTP_HOST_PROGRAM=os.path.join(config, "program.ngc"))
         session = subprocess.run(["unshare", "-n", "bash", "-c", SESSION], env=env)
         result = os.path.join(config, "result.json")
         print("linuxcnc -r %s: exit %d, %s" % (os.path.basename(ini), session.returncode,
@@ -143,13 +137,12 @@ def main():
                                                else "no result.json"))
         if session.returncode != 0:
             failed.append("linuxcnc exit %d" % session.returncode)
-        if a.host:
-            status = open(os.path.join(config, "host.status")).read().strip() \
-                if os.path.exists(os.path.join(config, "host.status")) else "not run"
-            print("firtp host: exit %s; %s" % (status, open(os.path.join(config, "host.log")).read().strip()
-                                              if os.path.exists(os.path.join(config, "host.log")) else ""))
-            if status != "0":
-                failed.append("firtp host exit " + status)
+        if a.host:  # firtp host printed into LinuxCNC's output: its progress and "PROGRAM: done in T s"
+            log = open(os.path.join(work, "linuxcnc.log")).read() if os.path.exists(os.path.join(work, "linuxcnc.log")) else ""
+            host = [l for l in log.splitlines() if l.startswith("firtp host") or l.startswith("  ")]
+            print("\n".join(host))
+            if "program.ngc: done in" not in log:
+                failed.append("firtp host (M101) did not report the program done")
         print(open(os.path.join(work, "states.log")).read().strip())
         samples = os.path.join(work, "samples.txt")
         got = subprocess.run([a.states, "samples", os.path.join(work, "states.lcmlog"), samples],
