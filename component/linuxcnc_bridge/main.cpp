@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
         if (motion) std::cout << ", " << motion->states_lost() << " lost";
         std::cout << std::endl;
     } catch (const std::exception& e) {
-        std::cerr << "firtp-lcm-bridge: " << e.what() << std::endl;
+        const std::string what = e.what();  // the component's own errors start with its name
+        std::cerr << (what.rfind(o.name + ": ", 0) == 0 ? "" : "firtp-lcm-bridge: ") << what << std::endl;
         return 1;
     }
     return 0;
