@@ -73,7 +73,9 @@ recorder=$!
 logger=
 if command -v lcm-logger > /dev/null; then lcm-logger --quiet -f "$WORK/lcm-logger.lcmlog" > "$WORK/lcm-logger.out" 2>&1 & logger=$!; fi
 sleep 0.5
-(cd "$CONFIG" && $AS_USER env HOME="$CONFIG" PATH="$PATH" FIRTP_HOST_PROGRAM="$FIRTP_HOST_PROGRAM" timeout 120 linuxcnc -r "$INI") > "$WORK/linuxcnc.log" 2>&1
+[ -n "$OPERATOR" ] && { (timeout 60 sh -c "$OPERATOR") > "$FIRTP_HOST_INPUT" & }
+(cd "$CONFIG" && $AS_USER env HOME="$CONFIG" PATH="$PATH" FIRTP_HOST_PROGRAM="$FIRTP_HOST_PROGRAM" \
+   FIRTP_HOST_INPUT="$FIRTP_HOST_INPUT" timeout 120 linuxcnc -r "$INI") > "$WORK/linuxcnc.log" 2>&1
 status=$?
 sleep 0.3
 kill -INT $recorder; wait $recorder
@@ -94,6 +96,9 @@ def main():
     parser.add_argument("--plan", help="firtp: compare every period with `firtp plan`")
     parser.add_argument("--within", default="1e-9")
     parser.add_argument("--dump", help="firtp-lcm-dump, to count lcm-logger's log")
+    parser.add_argument("--operator", default="",
+                        help="with --host: shell commands whose output is the host's operator input "
+                             "(FIRTP_HOST_INPUT, a named pipe), e.g. 'sleep 0.3; echo hold; sleep 0.5; echo resume'")
     parser.add_argument("--keep", help="copy the logs and recordings here")
     argv = sys.argv[1:]
     checks = argv[argv.index("--") + 1:] if "--" in argv else []
@@ -128,8 +133,14 @@ def main():
         for root, dirs, files in os.walk(work):
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
+        host_input = "/dev/null"
+        if a.operator:  # a named pipe: the commands' timing starts when the host opens it
+            host_input = os.path.join(work, "operator.fifo")
+            os.mkfifo(host_input)
+            os.chown(host_input, uid, gid)
         env = dict(os.environ, STATES=a.states, WORK=work, CONFIG=config, INI=ini, AS_USER=" ".join(prefix),
-                   FIRTP_HOST_PROGRAM=os.path.join(config, "program.ngc"))
+                   FIRTP_HOST_PROGRAM=os.path.join(config, "program.ngc"), FIRTP_HOST_INPUT=host_input,
+                   OPERATOR=a.operator)
         session = subprocess.run(["unshare", "-n", "bash", "-c", SESSION], env=env)
         result = os.path.join(config, "result.json")
         print("linuxcnc -r %s: exit %d, %s" % (os.path.basename(ini), session.returncode,
