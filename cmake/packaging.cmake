@@ -3,7 +3,8 @@
 # CMakeLists.txt, after every target exists.
 #
 # Layout under the prefix (GNUInstallDirs):
-#   bin/                          firtp, firtp-hal, firtp-lcm-dump, firtp-tp-check, firtp-lcm-spy
+#   bin/                          firtp, firtp-hal, firtp-lcm-dump, firtp-tp-check, firtp-lcm-spy,
+#                                 firtp-lcm-bridge
 #   lib/firtp/                    hal-shim's firtp.so (firtp run/serve and firtp-hal load it from
 #                                 ../lib/firtp next to their program) and its runtime libfirtp_hal_shim.so
 #   FIRTP_INSTALL_MODULEDIR       the LinuxCNC modules firtp.so and firtp_tp.so; relative to the
@@ -30,6 +31,9 @@ set(FIRTP_INSTALL_PKGLIBDIR lib/firtp)  # fixed: the programs find it as ../lib/
 set_target_properties(firtp firtp_hal PROPERTIES INSTALL_RPATH "$ORIGIN/../${FIRTP_INSTALL_PKGLIBDIR}")
 set_target_properties(firtp_module PROPERTIES INSTALL_RPATH "$ORIGIN")
 install(TARGETS firtp firtp_hal firtp_lcm_dump firtp_tp_check RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(TARGET firtp_lcm_bridge)  # LCM for a running LinuxCNC (loadusr), built with the LinuxCNC modules
+  install(TARGETS firtp_lcm_bridge RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 install(TARGETS firtp_module firtp_hal_shim LIBRARY DESTINATION ${FIRTP_INSTALL_PKGLIBDIR})
 if(FIRTP_LINUXCNC_ENABLED)
   install(TARGETS linuxcnc_firtp linuxcnc_firtp_tp LIBRARY DESTINATION ${FIRTP_INSTALL_MODULEDIR})

@@ -28,7 +28,7 @@ expect=(/usr/bin/firtp /usr/bin/firtp-hal /usr/bin/firtp-lcm-dump /usr/bin/firtp
 if [ "$linuxcnc" = 1 ]; then
   moddir=$(sed -n 's/^RTLIBDIR := \(\/.*\)$/\1/p' /usr/share/linuxcnc/Makefile.modinc 2> /dev/null | tail -1)
   moddir=${moddir:-/usr/lib/linuxcnc/modules}
-  expect+=("$moddir/firtp.so" "$moddir/firtp_tp.so")
+  expect+=("$moddir/firtp.so" "$moddir/firtp_tp.so" /usr/bin/firtp-lcm-bridge)
   grep -q 'linuxcnc-uspace' <<< "$depends" || fail "Depends does not name linuxcnc-uspace"
 fi
 for f in "${expect[@]}"; do grep -qx -- "$f" "$work/files.txt" || fail "$f is not in the package"; done

@@ -57,20 +57,21 @@ struct Bridge::Streams {
 const char* const* Bridge::pin_pairs() { return pairs; }
 
 Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), options_(options) {
-    comp_id_ = hal_init("firtp-bridge");
-    if (comp_id_ < 0) throw std::runtime_error("firtp-bridge: hal_init failed");
+    const char* name = options.name;
+    comp_id_ = hal_init(name);
+    if (comp_id_ < 0) throw std::runtime_error(std::string(name) + ": hal_init failed");
     pins_ = static_cast<Pins*>(hal_malloc(sizeof(Pins)));
     streams_ = new Streams;
     int r = pins_ ? 0 : -1;
-    r = r ? r : hal_pin_float_newf(HAL_OUT, &pins_->feed_scale, comp_id_, "firtp-bridge.feed-scale");
-    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->hold, comp_id_, "firtp-bridge.hold");
-    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->abort, comp_id_, "firtp-bridge.abort");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->queue_depth, comp_id_, "firtp-bridge.queue-depth");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->state, comp_id_, "firtp-bridge.state");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->error_code, comp_id_, "firtp-bridge.error-code");
-    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->rejected, comp_id_, "firtp-bridge.rejected");
-    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->tick, comp_id_, "firtp-bridge.tick");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->current_line, comp_id_, "firtp-bridge.current-line");
+    r = r ? r : hal_pin_float_newf(HAL_OUT, &pins_->feed_scale, comp_id_, "%s.feed-scale", name);
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->hold, comp_id_, "%s.hold", name);
+    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins_->abort, comp_id_, "%s.abort", name);
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->queue_depth, comp_id_, "%s.queue-depth", name);
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->state, comp_id_, "%s.state", name);
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->error_code, comp_id_, "%s.error-code", name);
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->rejected, comp_id_, "%s.rejected", name);
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->tick, comp_id_, "%s.tick", name);
+    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->current_line, comp_id_, "%s.current-line", name);
     if (r == 0) *pins_->feed_scale = 1.0;
     r = r ? r : hal_stream_attach(&streams_->blocks, comp_id_, options.block_key, stream::block_types);
     if (r == 0 && options.state_key != 0) {
@@ -80,7 +81,7 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
     if (r != 0) {
         delete streams_;
         hal_exit(comp_id_);
-        throw std::runtime_error("firtp-bridge: cannot create pins or attach to the component's streams "
+        throw std::runtime_error(std::string(name) + ": cannot create pins or attach to the component's streams "
                                  "(is firtp loaded with the same block_key/state_key?)");
     }
     hal_ready(comp_id_);

@@ -16,6 +16,7 @@
 namespace firtp {
 
 struct BridgeOptions {
+    const char* name = "firtp-bridge";  // HAL component name and pin prefix (pin_pairs() name the default)
     int block_key = 0x46495242;       // the component's block_key
     int state_key = 0x46495253;       // the component's state_key (0: no axis states)
     int axes = 3;
@@ -28,8 +29,8 @@ struct BridgeOptions {
 
 class Bridge {
 public:
-    // Registers HAL component "firtp-bridge" with its pins and attaches to the streams; the
-    // caller nets the pins (see pin_names()). Throws std::runtime_error on failure.
+    // Registers HAL component options.name with its pins and attaches to the streams; the caller
+    // nets the pins (see pin_pairs()). Throws std::runtime_error on failure.
     Bridge(lcm::LCM& lcm, const BridgeOptions& options);
     ~Bridge();
     Bridge(const Bridge&) = delete;
