@@ -1,5 +1,6 @@
 #include "replay_compare.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace firtp::cli {
@@ -26,7 +27,7 @@ public:
         for (int a = 0; a < axes_; ++a) {
             const double d = std::fabs(r[a] - p[a]);
             if (d > result.largest || std::isnan(d)) result.largest = d;
-            if (!(d <= tolerance_)) {
+            if (!(d <= tolerance_ * std::max(1.0, std::fabs(r[a])))) {
                 result.first = StateDifference{i, j, what, a, r[a], p[a]};
                 return false;
             }

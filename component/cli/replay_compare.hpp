@@ -22,12 +22,12 @@ struct StateDifference {
 
 struct Comparison {
     std::size_t compared = 0;    // recorded states matched to a replayed one
-    double largest = 0.0;        // largest |difference| of position, velocity or acceleration
+    double largest = 0.0;        // largest |difference| of position, velocity or acceleration (absolute)
     std::optional<StateDifference> first;  // empty: equal
 };
 
-// Differences up to `tolerance` (absolute, per value; 0: bit for bit) count as equal. `axes` of
-// the 9 are compared.
+// Two values are equal when |replayed - recorded| <= tolerance * max(1, |recorded|) (0: bit for
+// bit). `axes` of the 9 are compared.
 Comparison compare_states(const std::vector<firtp_lcm::axis_state_t>& recorded,
                           const std::vector<firtp_lcm::axis_state_t>& replayed, int axes, double tolerance);
 

@@ -37,12 +37,12 @@ void check_blocks(const std::filesystem::path& log, const std::map<std::int64_t,
 void check_states(const std::filesystem::path& log, const LoggedRun& run) {
     for (std::size_t i = 1; i < run.states.size(); ++i) {
         const std::int64_t missing = run.states[i].seq - run.states[i - 1].seq - 1;
-        if (missing != 0)
-            throw std::runtime_error(cat(log.string(), ": ", missing > 0 ? std::to_string(missing) : "repeated/reordered",
-                                         " axis states missing before FIRTP_AXIS_STATE seq ",
-                                         std::to_string(run.states[i].seq), " (event ",
-                                         std::to_string(run.state_events[i]),
-                                         "): the log is incomplete; record with `firtp record`"));
+        if (missing == 0) continue;
+        const std::string what = missing > 0 ? cat(std::to_string(missing), " axis states missing before")
+                                             : std::string("a repeated or reordered axis state at");
+        throw std::runtime_error(cat(log.string(), ": ", what, " FIRTP_AXIS_STATE seq ", std::to_string(run.states[i].seq),
+                                     " (event ", std::to_string(run.state_events[i]),
+                                     "): the log is incomplete; record with `firtp record`"));
     }
 }
 
