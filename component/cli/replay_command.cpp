@@ -213,6 +213,12 @@ int replay_command(std::span<const std::string> args) {
               << " (tolerance " << (options.tolerance > 0.0 ? number_text(options.tolerance) + " relative" : "0, bit for bit")
               << ")"
               << "\n";
+    if (run.config && !options.ini)
+        if (const firtp_lcm::status_t* s = fell_behind(run, *run.config))
+            std::cout << "note         the recorded component fell behind its block stream at tick " << s->tick
+                      << " (status seq " << s->seq << ": " << run.config->queue << "-block queue not full, blocks "
+                      << "waiting): it planned more slowly than blocks came, within its planning budget, so its motion "
+                         "from there depends on the machine's timing, which a replay does not reproduce\n";
     if (!c.first) {
         std::cout << "result       equal" << std::endl;
         return 0;

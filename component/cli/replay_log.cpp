@@ -73,6 +73,8 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
             const auto* bytes = static_cast<const std::uint8_t*>(event->data);
             e.data.assign(bytes, bytes + event->datalen);
             run.events.push_back(std::move(e));
+        } else if (channel == messages::status_channel) {
+            run.statuses.push_back(intact<firtp_lcm::status_t>(log, *event));
         } else if (channel == messages::axis_state_channel) {
             LoggedEvent e;
             e.kind = LoggedEvent::Kind::state;
@@ -88,6 +90,17 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
     check_blocks(log, programs);
     check_states(log, run);
     return run;
+}
+
+const firtp_lcm::status_t* fell_behind(const LoggedRun& run, const firtp_lcm::config_t& config, int margin) {
+    bool was_full = false;
+    for (const firtp_lcm::status_t& s : run.statuses) {
+        const std::int64_t waiting = std::int64_t{config.stream_depth} - 1 - s.queue_free;
+        const std::int64_t held = s.queue_depth - waiting;
+        if (held >= config.queue) was_full = true;
+        else if (was_full && waiting > 0 && held <= config.queue - margin) return &s;
+    }
+    return nullptr;
 }
 
 }  // namespace firtp::cli

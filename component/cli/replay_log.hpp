@@ -26,11 +26,18 @@ struct LoggedRun {
     std::vector<LoggedEvent> events;
     std::vector<firtp_lcm::axis_state_t> states;  // FIRTP_AXIS_STATE, in log order
     std::vector<std::int64_t> state_events;       // their event numbers
+    std::vector<firtp_lcm::status_t> statuses;    // FIRTP_STATUS, in log order
     std::int64_t blocks = 0, controls = 0;
 };
 
 // Throws std::runtime_error naming the log and the event: unreadable, a corrupted message, axis
 // states missing (seq gaps), a program whose blocks do not start at seq 1 or have gaps.
 LoggedRun read_logged_run(const std::filesystem::path& log);
+
+// The first status after the component's queue was full in which it held `margin` or more blocks
+// fewer than its queue while blocks waited in its stream: it was planning more slowly than the
+// blocks came (its planning budget), so its motion from there depends on its timing. The status
+// gives queue_depth = component + stream and queue_free = stream_depth - 1 - stream.
+const firtp_lcm::status_t* fell_behind(const LoggedRun& run, const firtp_lcm::config_t& config, int margin = 8);
 
 }  // namespace firtp::cli
