@@ -3,12 +3,15 @@
 # private network namespace), recorded by `firtp record`: nothing may be lost (its exit status and
 # per-channel summary), every block must be in the log, and `firtp replay` must reproduce the
 # component's axis states from the log alone. Exit 77 (skipped) where no namespace can be made.
-#   record_stream.sh FIRTP_BIN FIRTP_LCM_DUMP_BIN INI|- BLOCKS FEED [QUEUE [PATH [SECONDS]]]
+#   record_stream.sh FIRTP_BIN FIRTP_LCM_DUMP_BIN INI|- BLOCKS FEED [QUEUE [PATH [SECONDS [REPLAY]]]]
 # PATH: spiral (1 mm chords of a 2 m circle) or zigzag (0.5 mm steps across 0.3 mm, the stream
 # benchmark's). SECONDS: stop host and component after that long (the log then ends in the middle
-# of the motion; the replay compares what was recorded). $FIRTP_KEEP=DIR keeps the files there.
+# of the motion; the replay compares what was recorded). REPLAY: equal (the replay must equal the
+# recording: the default) or report (print its result only: a long serve run's motion depends on
+# when the component took each block, which the log does not hold; docs/RECORDING.md).
+# $FIRTP_KEEP=DIR keeps the files there.
 set -euo pipefail
-firtp=$1 dump=$2 ini=$3 blocks=$4 feed=$5 queue=${6:-1024} path=${7:-spiral} seconds=${8:-0}
+firtp=$1 dump=$2 ini=$3 blocks=$4 feed=$5 queue=${6:-1024} path=${7:-spiral} seconds=${8:-0} replay=${9:-equal}
 work=${FIRTP_KEEP:-$(mktemp -d)}
 mkdir -p "$work"
 [ -n "${FIRTP_KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
@@ -66,4 +69,6 @@ import collections, sys
 t = [int(line.split()[0]) for line in sys.stdin]
 busiest = max(collections.Counter(x // 100000 for x in t).values())
 print(f"blocks recorded: {len(t)} in {(t[-1] - t[0]) / 1e6:.2f} s, {len(t) / max(t[-1] - t[0], 1) * 1e6:.0f} blocks/s; busiest 100 ms: {busiest * 10} blocks/s")'
-"$firtp" replay "$work/stream.lcmlog"
+status=0; "$firtp" replay "$work/stream.lcmlog" || status=$?
+[ "$replay" = report ] && [ $status = 4 ] && { echo "(replay differs: reported, not checked)"; exit 0; }
+exit $status
