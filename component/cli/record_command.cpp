@@ -196,7 +196,13 @@ int record_command(std::span<const std::string> args) {
 
     std::cout << "firtp record: " << writer.events() << " messages in " << options.log.string() << "\n";
     const bool complete = print_totals(std::cout, writer.summary());
-    std::cout << (complete ? "nothing lost\n" : "messages were lost (LOST above)\n") << std::flush;
+    if (complete) {
+        std::cout << "nothing lost\n" << std::flush;
+    } else {  // which seq numbers, per channel and program (as firtp-lcm-dump --count)
+        std::cout << "messages were lost (LOST above); seq numbers seen:\n";
+        writer.summary().print(std::cout);
+        std::cout.flush();
+    }
     return complete ? 0 : exit_mismatch;
 }
 
