@@ -151,9 +151,8 @@ int record_command(std::span<const std::string> args) {
         const std::vector<std::string> serve_args{"--ini", options.ini->string()};
         const ChainOptions serve = parse_serve_options(serve_args);
         const MachineConfig machine = load_machine_config(serve.plan);
-        ChainSettings settings;
-        settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // as firtp serve
-        firtp_lcm::config_t config = config_message("serve", serve_args, serve, machine, settings);
+        firtp_lcm::config_t config =
+            config_message("serve", serve_args, serve, machine, serve_chain_settings(machine, serve.queue));
         config.seq = 1;
         config.utime = messages::now_utime();
         writer.write(messages::config_channel, config.utime, messages::seal_encoded(config));

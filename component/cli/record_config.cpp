@@ -59,6 +59,13 @@ private:
 
 }  // namespace
 
+ChainSettings serve_chain_settings(const MachineConfig& machine, int queue) {
+    ChainSettings settings;
+    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // half the servo period
+    settings.queue = queue;
+    return settings;
+}
+
 firtp_lcm::config_t config_message(const std::string& command, std::span<const std::string> args,
                                    const ChainOptions& options, const MachineConfig& machine,
                                    const ChainSettings& settings) {

@@ -14,6 +14,9 @@
 
 namespace firtp::cli {
 
+// firtp.so's settings as `firtp serve` runs it: planning within half the servo period, `queue` blocks.
+ChainSettings serve_chain_settings(const MachineConfig& machine, int queue);
+
 // The message for `firtp COMMAND args...` running `machine` with `settings` (reads the INI's text).
 firtp_lcm::config_t config_message(const std::string& command, std::span<const std::string> args,
                                    const ChainOptions& options, const MachineConfig& machine,

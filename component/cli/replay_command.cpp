@@ -126,12 +126,11 @@ private:
 void print_difference(std::ostream& out, const StateDifference& d, const LoggedRun& run,
                       const std::vector<firtp_lcm::axis_state_t>& replayed) {
     static const char axis_names[] = "XYZABCUVW";
-    const firtp_lcm::axis_state_t& r = run.states[std::min(d.recorded, run.states.size() - 1)];
+    const std::size_t i = std::min(d.recorded, run.states.size() - 1);
+    const firtp_lcm::axis_state_t& r = run.states[i];
     out << "first difference: " << messages::axis_state_channel << " seq " << r.seq << " (log event "
-        << run.state_events[std::min(d.recorded, run.states.size() - 1)] << ", tick " << r.tick << ", t = "
-        << number_text(r.time) << " s, line " << r.line << ")";
-    if (d.recorded < replayed.size() || d.replayed < replayed.size())
-        out << ", replayed state " << d.replayed << " (tick " << replayed[std::min(d.replayed, replayed.size() - 1)].tick << ")";
+        << run.state_events[i] << ", tick " << r.tick << ", t = " << number_text(r.time) << " s, line " << r.line << ")";
+    if (d.replayed < replayed.size()) out << ", replayed state " << d.replayed << " (tick " << replayed[d.replayed].tick << ")";
     out << ":\n  ";
     if (d.what == "motion")
         out << "the recording moves, the replay " << (d.replayed + 1 >= replayed.size() ? "ended" : "stays at rest") << "\n";

@@ -48,9 +48,7 @@ int serve_command(std::span<const std::string> args) {
     const MachineConfig machine = load_machine_config(options.plan);
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
-    ChainSettings settings;
-    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // half the servo period
-    settings.queue = options.queue;
+    const ChainSettings settings = serve_chain_settings(machine, options.queue);
     firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
     ConfigPublisher config(*lcm, config_message("serve", args, options, machine, settings));  // for recorders
     std::signal(SIGINT, request_stop);
