@@ -44,7 +44,9 @@ po::options_description serve_flags() {
     d.add_options()("exit-when-done", "exit once a program has run to its end (or failed)")(
         "duration", po::value<double>()->value_name("S"), "exit after S seconds")(
         "rt-prio", po::value<int>()->value_name("N"),
-        "servo thread SCHED_FIFO priority 1-99 where the system allows it (80; 0: normal scheduling)");
+        "servo thread SCHED_FIFO priority 1-99 where the system allows it (80; 0: normal scheduling)")(
+        "queue", po::value<int>()->value_name("N"),
+        "blocks the component holds, planned ahead (1024); a host may send that many beyond the running one");
     d.add(machine_flags()).add(transport_flags(true));
     return d;
 }
@@ -79,6 +81,10 @@ ChainOptions parse_serve_options(std::span<const std::string> args) {
     if (vm.count("rt-prio")) {
         o.rt_priority = vm["rt-prio"].as<int>();
         if (o.rt_priority < 0 || o.rt_priority > 99) throw UsageError("--rt-prio: must be 0 (normal scheduling) or 1-99");
+    }
+    if (vm.count("queue")) {
+        o.queue = vm["queue"].as<int>();
+        if (o.queue < 1 || o.queue > 10'000'000) throw UsageError("--queue: must be 1-10000000 blocks");
     }
     if (vm.count("duration")) {
         o.duration = vm["duration"].as<double>();

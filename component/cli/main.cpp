@@ -3,6 +3,7 @@
 // exit 3 when the measurement finds a tolerance or a limit broken (plan_checks.hpp).
 #include "cli_errors.hpp"
 #include "plan_command.hpp"
+#include "record_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
 #include <firtp/version.hpp>
@@ -26,14 +27,17 @@ constexpr const char* usage =
     "  serve              the HAL component and its LCM bridge on a real-time servo thread\n"
     "  host PROGRAM.ngc   stream a program over LCM to `firtp serve`, with progress and keys\n"
     "  simulate PROGRAM.ngc  firtp tuned to the structural modes, untuned, and an S-curve planner\n"
-    "                     driving the modes: residual vibration table, --out DIR for plots\n\n"
+    "                     driving the modes: residual vibration table, --out DIR for plots\n"
+    "  record LOG.lcmlog  record every LCM message without loss, checking every stream's seq numbers\n"
+    "  replay LOG.lcmlog  run the component again on a recorded log and compare its axis states\n\n"
     "Options:\n"
     "  -h, --help         show this help and exit\n"
     "  --version          print firtp's version and exit\n\n"
     "Run 'firtp COMMAND --help' for a command's options (plan: --ini, --t1, --t2, --tolerance,\n"
     "--period, --tolerance-meaning, --csv, --json, --plot; run, serve, host add --lcm-url).\n\n"
     "Exit status: 0 done; 1 bad input (program, INI, files); 2 bad command line; 3 plan and run:\n"
-    "the measured trajectory breaks a tolerance, an axis limit or the end point (named on stderr).\n";
+    "the measured trajectory breaks a tolerance, an axis limit or the end point (named on stderr);\n"
+    "4 record: messages were lost; replay: the axis states differ from the recorded ones.\n";
 
 int dispatch(const std::vector<std::string>& args) {
     if (args.empty()) {
@@ -53,6 +57,8 @@ int dispatch(const std::vector<std::string>& args) {
     if (args[0] == "serve") return firtp::cli::serve_command(std::span(args).subspan(1));
     if (args[0] == "host") return firtp::cli::host_command(std::span(args).subspan(1));
     if (args[0] == "simulate") return firtp::cli::simulate_command(std::span(args).subspan(1));
+    if (args[0] == "record") return firtp::cli::record_command(std::span(args).subspan(1));
+    if (args[0] == "replay") return firtp::cli::replay_command(std::span(args).subspan(1));
     throw firtp::cli::UsageError("unknown command '" + args[0] + "' (see firtp --help)");
 }
 

@@ -6,6 +6,7 @@
 #include "plan_checks.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
+#include "record_config.hpp"
 #include <firtp/recorded_states.hpp>
 #include <firtp/servo_chain.hpp>
 #include "summary.hpp"
@@ -36,7 +37,10 @@ int run_command(std::span<const std::string> args) {
     const auto lcm = messages::open(options.lcm_url.empty() ? "memq://" : options.lcm_url);
     std::optional<LcmRecorder> recorder;
     if (options.lcm_log) recorder.emplace(*lcm, *options.lcm_log);
-    firtp::ServoChain chain(*lcm, run.machine, options.module.value_or(firtp::default_module_path()));
+    const ChainSettings settings;
+    firtp::ServoChain chain(*lcm, run.machine, options.module.value_or(firtp::default_module_path()), settings);
+    // The machine first in the log, so that `firtp replay` needs nothing else.
+    ConfigPublisher config(*lcm, config_message("run", args, options, run.machine, settings));
     host::HostOptions host_options;
     host_options.record_axis_states = true;
     host::Host host(*lcm, run.program, host_options);

@@ -1,5 +1,6 @@
 #include "chain_options.hpp"
 #include "plan_run.hpp"
+#include "record_config.hpp"
 #include "run_command.hpp"
 #include <firtp/servo_chain.hpp>
 
@@ -47,9 +48,9 @@ int serve_command(std::span<const std::string> args) {
     const MachineConfig machine = load_machine_config(options.plan);
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
-    ChainSettings settings;
-    settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // half the servo period
+    const ChainSettings settings = serve_chain_settings(machine, options.queue);
     firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
+    ConfigPublisher config(*lcm, config_message("serve", args, options, machine, settings));  // for recorders
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
     // Real time where the system allows it (root, CAP_SYS_NICE or an rtprio limit), and say which.
@@ -72,6 +73,7 @@ int serve_command(std::span<const std::string> args) {
     while (!stop_requested) {
         lcm->handleTimeout(1);
         chain.poll();
+        config.poll();
         const Clock::time_point now = Clock::now();
         if (options.duration > 0.0 && now - begin > std::chrono::duration<double>(options.duration)) break;
         if (!chain.bridge().idle()) idle_since = now;

@@ -76,6 +76,12 @@ std::string text(const firtp_lcm::control_t& m) {
         .field("abort", m.abort).str();
 }
 
+std::string text(const firtp_lcm::config_t& m) {
+    return Line("config_t").field("seq", m.seq).field("command", m.command.c_str())
+        .field("ini", m.ini_file.empty() ? "(built-in)" : m.ini_file.c_str()).field("period", m.period)
+        .field("axes", m.axes).str();
+}
+
 std::int64_t program_of(const firtp_lcm::block_t& m) { return m.program; }
 template <class Message> std::int64_t program_of(const Message&) { return 0; }
 
@@ -100,6 +106,7 @@ EventText describe(const void* data, int size) {
     if (auto e = try_decode<firtp_lcm::status_t>(data, size)) return *e;
     if (auto e = try_decode<firtp_lcm::axis_state_t>(data, size)) return *e;
     if (auto e = try_decode<firtp_lcm::control_t>(data, size)) return *e;
+    if (auto e = try_decode<firtp_lcm::config_t>(data, size)) return *e;
     return EventText{"? " + std::to_string(size) + " bytes", std::nullopt};
 }
 

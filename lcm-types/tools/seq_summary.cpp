@@ -61,6 +61,29 @@ void SeqSummary::add(const std::string& channel, const EventText& event) {
     if (first || key->seq > s.highest) s.highest = key->seq;
 }
 
+std::int64_t SeqSummary::Stream::missing() const {
+    std::int64_t gaps = 0;
+    for (auto run = runs.begin(); run != runs.end() && std::next(run) != runs.end(); ++run)
+        gaps += std::next(run)->first - run->second - 1;
+    return gaps;
+}
+
+std::map<std::string, ChannelTotals> SeqSummary::totals() const {
+    std::map<std::string, ChannelTotals> out;
+    for (const auto& [name, c] : channels_) {
+        ChannelTotals& t = out[name];
+        t.events = c.events;
+        t.corrupted = c.corrupted;
+        t.unknown = c.unknown;
+        for (const auto& [program, s] : c.programs) {
+            t.missing += s.missing();
+            t.repeated += s.repeated;
+            t.reordered += s.reordered;
+        }
+    }
+    return out;
+}
+
 void SeqSummary::print(std::ostream& out) const {
     for (const auto& [name, c] : channels_) {
         if (c.unknown > 0) out << name << " events=" << c.unknown << " unknown type\n";
@@ -69,12 +92,11 @@ void SeqSummary::print(std::ostream& out) const {
             out << name;
             if (program != 0) out << " program=" << program;
             const std::int64_t first = s.runs.begin()->first;
-            std::int64_t missing = 0;
+            const std::int64_t missing = s.missing();
             std::string gaps;
             int listed = 0;
             for (auto run = s.runs.begin(); std::next(run) != s.runs.end(); ++run) {
                 const std::int64_t from = run->second + 1, to = std::next(run)->first - 1;
-                missing += to - from + 1;
                 if (listed++ < max_listed_gaps) gaps.append(gaps.empty() ? "" : ",").append(range(from, to));
                 else if (listed == max_listed_gaps + 1) gaps.append(",...");
             }

@@ -11,10 +11,21 @@
 
 namespace firtp::dump {
 
+// What a channel's counters say, all its programs together.
+struct ChannelTotals {
+    std::int64_t events = 0;
+    std::int64_t missing = 0;    // seq values never seen between the lowest and the highest seen
+    std::int64_t repeated = 0;   // seq values seen more than once
+    std::int64_t reordered = 0;  // a new seq below the highest seen
+    std::int64_t corrupted = 0;  // crc did not match
+    std::int64_t unknown = 0;    // no firtp_lcm type
+};
+
 class SeqSummary {
 public:
     void add(const std::string& channel, const EventText& event);
     void print(std::ostream& out) const;
+    std::map<std::string, ChannelTotals> totals() const;
 
 private:
     struct Stream {
@@ -23,6 +34,7 @@ private:
         std::int64_t reordered = 0;                  // new seq below the highest seen
         std::int64_t highest = 0;
         std::map<std::int64_t, std::int64_t> runs;   // seen seq as [first, last] runs
+        std::int64_t missing() const;
     };
     struct Channel {
         std::int64_t events = 0;

@@ -9,7 +9,7 @@ execute_process(
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "ClassDiscoverer failed (${result}): ${errors}")
 endif()
-foreach(type axis_state_t block_t control_t status_t)
+foreach(type axis_state_t block_t config_t control_t status_t)
   if(NOT found MATCHES "class firtp_lcm\\.${type}[\r\n]")
     message(FATAL_ERROR "firtp_lcm.${type} not found in ${TYPES_JAR}:\n${found}")
   endif()

@@ -5,6 +5,7 @@
 #include <firtp/types.hpp>
 #include <firtp_lcm/axis_state_t.hpp>
 #include <firtp_lcm/block_t.hpp>
+#include <firtp_lcm/config_t.hpp>
 #include <firtp_lcm/control_t.hpp>
 #include <firtp_lcm/status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -23,6 +24,7 @@ inline constexpr const char* status_channel = "FIRTP_STATUS";
 inline constexpr const char* axis_state_channel = "FIRTP_AXIS_STATE";            // every servo period
 inline constexpr const char* axis_state_live_channel = "FIRTP_AXIS_STATE_LIVE";  // decimated
 inline constexpr const char* control_channel = "FIRTP_CONTROL";
+inline constexpr const char* config_channel = "FIRTP_CONFIG";  // machine and settings (config_t)
 
 // LCM's default multicast group with ttl=0 (this host only) and an 8 MiB receive buffer.
 std::string default_url();

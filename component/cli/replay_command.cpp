@@ -1,0 +1,231 @@
+#include "record_command.hpp"
+
+#include "chain_options.hpp"
+#include "cli_errors.hpp"
+#include "plan_run.hpp"
+#include "number_text.hpp"
+#include "record_config.hpp"
+#include "replay_compare.hpp"
+#include "replay_log.hpp"
+
+#include <firtp/messages.hpp>
+#include <firtp/servo_chain.hpp>
+#include <firtp/text_cat.hpp>
+
+#include <boost/program_options.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace firtp::cli {
+namespace {
+
+namespace po = boost::program_options;
+
+// When the blocks arrived (the transport's timing) can change the look-ahead's rounding: up to
+// 9e-12 relative measured (1.1e-8 on 1257 mm/s^2, tests/replay/record_stream.sh; docs/RECORDING.md).
+constexpr double default_replay_tolerance = 1e-9;
+
+struct ReplayOptions {
+    std::filesystem::path log;
+    double tolerance = default_replay_tolerance;  // relative (replay_compare.hpp); 0: bit for bit
+    std::optional<std::filesystem::path> ini;     // another machine than the logged one
+    std::optional<std::filesystem::path> module;  // firtp.so
+    bool help = false;
+};
+
+po::options_description replay_flags() {
+    po::options_description d("Options", 100, 50);
+    d.add_options()("help,h", "show this help and exit")(
+        "tolerance", po::value<double>()->value_name("X"),
+        "equal: every position, velocity and acceleration within X times max(1, |recorded value|) (1e-9: rounding "
+        "differences from when blocks arrived are equal; 0: bit for bit)")(
+        "ini", po::value<std::string>()->value_name("FILE"),
+        "run this machine instead of the logged one (for logs without FIRTP_CONFIG, or to see what an INI change does)")(
+        "module", po::value<std::string>()->value_name("firtp.so"),
+        "the HAL component to load (default: ../lib/firtp.so next to this program, or $FIRTP_MODULE)");
+    return d;
+}
+
+ReplayOptions parse_replay_options(std::span<const std::string> args) {
+    po::options_description all = replay_flags();
+    all.add_options()("log", po::value<std::string>());
+    po::positional_options_description positional;
+    positional.add("log", 1);
+    po::variables_map vm;
+    try {
+        po::store(po::command_line_parser(std::vector<std::string>(args.begin(), args.end()))
+                      .options(all).positional(positional).run(), vm);
+        po::notify(vm);
+    } catch (const po::error& e) {
+        throw UsageError(std::string(e.what()) + " (see firtp replay --help)");
+    }
+    ReplayOptions o;
+    o.help = vm.count("help") > 0;
+    if (o.help) return o;
+    if (!vm.count("log")) throw UsageError("replay: missing LOG.lcmlog (see firtp replay --help)");
+    o.log = vm["log"].as<std::string>();
+    if (vm.count("tolerance") && !((o.tolerance = vm["tolerance"].as<double>()) >= 0.0))
+        throw UsageError("--tolerance: must be 0 or a positive number");
+    if (vm.count("ini")) o.ini = vm["ini"].as<std::string>();
+    if (vm.count("module")) o.module = vm["module"].as<std::string>();
+    return o;
+}
+
+std::string replay_help() {
+    std::ostringstream text;
+    text << "Usage: firtp replay LOG.lcmlog [options]\n\n"
+            "Runs the component again on a log recorded by `firtp record` (or `firtp run --lcm-log`): builds it\n"
+            "from the log's FIRTP_CONFIG (machine and settings), feeds it the logged FIRTP_BLOCK and FIRTP_CONTROL\n"
+            "messages at the servo periods they arrived in, stepped one period at a time, and compares its axis\n"
+            "states with the logged FIRTP_AXIS_STATE, printing where they first differ. Where the recording's\n"
+            "component was short of planning time (its servo thread's budget cut how many blocks it took in a\n"
+            "period), the replay, which plans without that limit, can differ: the log does not say which\n"
+            "period took which block.\n\n"
+         << replay_flags()
+         << "\nExit status: 0 equal; 1 bad input (unreadable or incomplete log, no machine); 2 bad command line;\n"
+            "4 the replayed axis states differ from the recorded ones.\n";
+    return text.str();
+}
+
+// The axis states the replayed component publishes.
+struct Collector {
+    std::vector<firtp_lcm::axis_state_t> states;
+    std::optional<std::string> problem;  // the first replayed state that was not intact (never expected)
+    void on_state(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto received = messages::receive<firtp_lcm::axis_state_t>(buffer->data, buffer->data_size);
+        if (received.problem && !problem) problem = "replayed axis state: " + *received.problem;
+        states.push_back(received.message);
+    }
+};
+
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), shown_(isatty(STDERR_FILENO) != 0) {}
+    void update(std::size_t done) {
+        if (!shown_) return;
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_ < std::chrono::milliseconds(250)) return;
+        last_ = now;
+        std::cerr << "\rreplay: " << done << " of " << total_ << " axis states ("
+                  << (total_ ? 100 * done / total_ : 100) << " %)" << std::flush;
+    }
+    void done() {
+        if (shown_) std::cerr << "\r\033[K" << std::flush;
+    }
+
+private:
+    std::size_t total_;
+    bool shown_;
+    std::chrono::steady_clock::time_point last_{};
+};
+
+void print_difference(std::ostream& out, const StateDifference& d, const LoggedRun& run,
+                      const std::vector<firtp_lcm::axis_state_t>& replayed) {
+    static const char axis_names[] = "XYZABCUVW";
+    const std::size_t i = std::min(d.recorded, run.states.size() - 1);
+    const firtp_lcm::axis_state_t& r = run.states[i];
+    out << "first difference: " << messages::axis_state_channel << " seq " << r.seq << " (log event "
+        << run.state_events[i] << ", tick " << r.tick << ", t = " << number_text(r.time) << " s, line " << r.line << ")";
+    if (d.replayed < replayed.size()) out << ", replayed state " << d.replayed << " (tick " << replayed[d.replayed].tick << ")";
+    out << ":\n  ";
+    if (d.what == "motion")
+        out << "the recording moves, the replay " << (d.replayed + 1 >= replayed.size() ? "ended" : "stays at rest") << "\n";
+    else if (d.axis >= 0)
+        out << d.what << " " << axis_names[d.axis] << ": recorded " << number_text(d.recorded_value) << ", replayed "
+            << number_text(d.replayed_value) << " (difference " << number_text(d.replayed_value - d.recorded_value)
+            << ")\n";
+    else
+        out << d.what << ": recorded " << number_text(d.recorded_value) << ", replayed " << number_text(d.replayed_value)
+            << "\n";
+}
+
+}  // namespace
+
+int replay_command(std::span<const std::string> args) {
+    const ReplayOptions options = parse_replay_options(args);
+    if (options.help) {
+        std::cout << replay_help();
+        return 0;
+    }
+    const LoggedRun run = read_logged_run(options.log);
+    LoggedComponent component;
+    if (options.ini) {
+        const std::vector<std::string> serve_args{"--ini", options.ini->string()};
+        component.machine = load_machine_config(parse_serve_options(serve_args).plan);
+        if (run.config) component.settings = component_from(*run.config).settings;
+        component.description = cat("--ini ", options.ini->string(), " (given)");
+    } else if (run.config) {
+        component = component_from(*run.config);
+    } else {
+        throw std::runtime_error(cat(options.log.string(), ": no FIRTP_CONFIG in the log, so its machine is unknown: "
+                                     "record with `firtp record` beside `firtp serve` (or `firtp record --ini`), "
+                                     "or give --ini"));
+    }
+    component.settings.plan_budget_us = 0;  // stepped: the planning a period does is not cut by the clock
+
+    // The component on memq://, as `firtp run` builds it, stepped one period at a time.
+    const auto lcm = messages::open("memq://");
+    ServoChain chain(*lcm, component.machine, options.module.value_or(default_module_path()), component.settings);
+    Collector collector;
+    messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Collector::on_state, &collector));
+    auto period = [&] {
+        while (lcm->handleTimeout(0) > 0) {
+        }
+        chain.step();
+        chain.poll();
+        while (lcm->handleTimeout(0) > 0) {
+        }
+    };
+
+    // Inputs go in before the period of the first axis state logged after them.
+    Progress progress(run.states.size());
+    const std::int64_t first_tick = run.states.front().tick;
+    std::int64_t periods = 0;
+    for (const LoggedEvent& e : run.events) {
+        if (e.kind == LoggedEvent::Kind::input) {
+            lcm->publish(e.channel, e.data.data(), static_cast<unsigned>(e.data.size()));
+            continue;
+        }
+        const std::int64_t wanted = run.states[e.state].tick - first_tick + 1;
+        while (periods < wanted) {
+            period();
+            ++periods;
+        }
+        progress.update(e.state);
+    }
+    // A few periods more: a motion that starts a period later than recorded is still compared.
+    for (int extra = 0; extra < 10; ++extra, ++periods) period();
+    progress.done();
+    if (collector.problem) throw std::runtime_error(*collector.problem);
+
+    const Comparison c = compare_states(run.states, collector.states, component.machine.limits.axes, options.tolerance);
+    std::cout << "replay " << options.log.string() << "\n"
+              << "machine      " << component.description << "\n"
+              << "log          " << run.blocks << " blocks, " << run.controls << " controls, " << run.states.size()
+              << " axis states\n"
+              << "replayed     " << collector.states.size() << " axis states in " << periods << " servo periods\n"
+              << "compared     " << c.compared << " states, largest difference " << number_text(c.largest)
+              << " (tolerance " << (options.tolerance > 0.0 ? number_text(options.tolerance) + " relative" : "0, bit for bit")
+              << ")"
+              << "\n";
+    if (run.config && !options.ini)
+        if (const firtp_lcm::status_t* s = fell_behind(run, *run.config))
+            std::cout << "note         the recorded component fell behind its block stream at tick " << s->tick
+                      << " (status seq " << s->seq << ": " << run.config->queue << "-block queue not full, blocks "
+                      << "waiting): it planned more slowly than blocks came, within its planning budget, so its motion "
+                         "from there depends on the machine's timing, which a replay does not reproduce\n";
+    if (!c.first) {
+        std::cout << "result       equal" << std::endl;
+        return 0;
+    }
+    std::cout << "result       DIFFERENT\n";
+    print_difference(std::cout, *c.first, run, collector.states);
+    std::cout.flush();
+    return exit_mismatch;
+}
+
+}  // namespace firtp::cli

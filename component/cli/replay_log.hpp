@@ -1,0 +1,43 @@
+// What `firtp replay` takes from an LCM log: the component's configuration, and in log order the
+// messages sent to it (blocks, controls) and the axis states it produced. Every message must be
+// intact and the log complete (no axis state or block missing), else it cannot be replayed.
+#pragma once
+
+#include <firtp/messages.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace firtp::cli {
+
+struct LoggedEvent {
+    enum class Kind { input, state } kind = Kind::input;
+    std::int64_t eventnum = 0;
+    std::string channel;                     // input: FIRTP_BLOCK or FIRTP_CONTROL
+    std::vector<std::uint8_t> data;          // input: the bytes as logged (sealed)
+    std::size_t state = 0;                   // state: index into LoggedRun::states
+};
+
+struct LoggedRun {
+    std::optional<firtp_lcm::config_t> config;  // the first FIRTP_CONFIG
+    std::vector<LoggedEvent> events;
+    std::vector<firtp_lcm::axis_state_t> states;  // FIRTP_AXIS_STATE, in log order
+    std::vector<std::int64_t> state_events;       // their event numbers
+    std::vector<firtp_lcm::status_t> statuses;    // FIRTP_STATUS, in log order
+    std::int64_t blocks = 0, controls = 0;
+};
+
+// Throws std::runtime_error naming the log and the event: unreadable, a corrupted message, axis
+// states missing (seq gaps), a program whose blocks do not start at seq 1 or have gaps.
+LoggedRun read_logged_run(const std::filesystem::path& log);
+
+// The first status after the component's queue was full in which it held `margin` or more blocks
+// fewer than its queue while blocks waited in its stream: it was planning more slowly than the
+// blocks came (its planning budget), so its motion from there depends on its timing. The status
+// gives queue_depth = component + stream and queue_free = stream_depth - 1 - stream.
+const firtp_lcm::status_t* fell_behind(const LoggedRun& run, const firtp_lcm::config_t& config, int margin = 8);
+
+}  // namespace firtp::cli

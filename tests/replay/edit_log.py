@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""Writes a damaged copy of an LCM log (lcm-logger's format), for tests of firtp record / replay:
+   edit_log.py IN OUT drop CHANNEL EVERY   drop every EVERY-th event on CHANNEL (the 2nd, ...)
+   edit_log.py IN OUT dup CHANNEL EVERY    write every EVERY-th event on CHANNEL twice
+   edit_log.py IN OUT flip CHANNEL INDEX   flip one bit in the INDEX-th event on CHANNEL (crc no longer matches)
+   edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL"""
+import struct
+import sys
+
+SYNC = 0xEDA1DA01
+
+
+def events(path):
+    data = open(path, "rb").read()
+    at = 0
+    while at < len(data):
+        sync, num, utime, clen, dlen = struct.unpack_from(">IqqII", data, at)
+        assert sync == SYNC, f"{path}: bad sync word at byte {at}"
+        at += 28
+        channel = data[at:at + clen]
+        at += clen
+        payload = data[at:at + dlen]
+        at += dlen
+        yield utime, channel, payload
+
+
+def main():
+    src, dst, op, channel = sys.argv[1:5]
+    arg = int(sys.argv[5]) if len(sys.argv) > 5 else 0
+    out, seen = [], 0
+    for utime, ch, payload in events(src):
+        if ch.decode() != channel:
+            out.append((utime, ch, payload))
+            continue
+        seen += 1
+        if op == "strip" or (op == "drop" and seen % arg == 0):
+            continue
+        if op == "flip" and seen == arg:
+            payload = payload[:20] + bytes([payload[20] ^ 1]) + payload[21:]
+        out.append((utime, ch, payload))
+        if op == "dup" and seen % arg == 0:
+            out.append((utime, ch, payload))
+    with open(dst, "wb") as f:
+        for num, (utime, ch, payload) in enumerate(out):
+            f.write(struct.pack(">IqqII", SYNC, num, utime, len(ch), len(payload)) + ch + payload)
+
+
+main()

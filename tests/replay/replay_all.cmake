@@ -1,0 +1,20 @@
+# Runs `firtp replay` on every *.lcmlog in DIR, found when the test runs (drop a log in the folder
+# and it is replayed): each must reproduce its recorded axis states. Fails when there is none.
+#   cmake -DFIRTP=<firtp> -DDIR=<folder> -P replay_all.cmake
+file(GLOB logs "${DIR}/*.lcmlog")
+list(LENGTH logs count)
+if(count EQUAL 0)
+  message(FATAL_ERROR "no *.lcmlog in ${DIR}")
+endif()
+set(failed "")
+foreach(log ${logs})
+  execute_process(COMMAND ${FIRTP} replay ${log} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${out}${err}exit ${result}\n")
+  if(NOT result EQUAL 0)
+    list(APPEND failed ${log})
+  endif()
+endforeach()
+if(failed)
+  message(FATAL_ERROR "replay failed: ${failed}")
+endif()
+message(STATUS "${count} logs replayed, every one equal")

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# firtp replay and firtp record on damaged logs (tests/replay/edit_log.py): each problem gets its
+# exit status and a message naming it.   replay_errors.sh FIRTP_BIN REPLAY_DIR EXAMPLES_DIR
+set -euo pipefail
+firtp=$1 dir=$2 examples=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+log=$dir/diamond.lcmlog
+edit() { python3 "$dir/edit_log.py" "$log" "$work/$1.lcmlog" "${@:2}"; }
+
+# expect NAME STATUS REGEX COMMAND...: COMMAND exits STATUS and its output matches REGEX.
+expect() {
+  local name=$1 want=$2 regex=$3 status=0
+  shift 3
+  "$@" > "$work/out.txt" 2>&1 || status=$?
+  if [ "$status" != "$want" ] || ! grep -Eq "$regex" "$work/out.txt"; then
+    echo "FAIL $name: exit $status (want $want), output:"; cat "$work/out.txt"; exit 1
+  fi
+  echo "ok   $name: exit $status, $(grep -Em1 "$regex" "$work/out.txt")"
+}
+
+expect "the golden log replays" 0 "result +equal" "$firtp" replay "$log"
+expect "bit for bit" 0 "result +equal" "$firtp" replay "$log" --tolerance 0
+# Another machine: the states differ, and the first difference is named.
+expect "another machine differs" 4 "position X: recorded .*, replayed " \
+  "$firtp" replay "$log" --ini "$examples/diamond_modes.ini"
+expect "where it differs" 4 "first difference: FIRTP_AXIS_STATE seq [0-9]+ \\(log event [0-9]+, tick [0-9]+, t = " \
+  "$firtp" replay "$log" --ini "$examples/diamond_modes.ini"
+edit no_config strip FIRTP_CONFIG
+expect "no machine in the log" 1 "no FIRTP_CONFIG in the log" "$firtp" replay "$work/no_config.lcmlog"
+expect "no machine, --ini given" 0 "result +equal" "$firtp" replay "$work/no_config.lcmlog" --ini "$examples/diamond.ini"
+edit dropped drop FIRTP_AXIS_STATE 100
+expect "axis states missing" 1 "1 axis states missing before FIRTP_AXIS_STATE seq 101 \\(event [0-9]+\\)" "$firtp" replay "$work/dropped.lcmlog"
+edit no_block drop FIRTP_BLOCK 2
+expect "a block missing" 1 "misses 1 of its blocks 1..3 \\(first: seq 2\\)" "$firtp" replay "$work/no_block.lcmlog"
+edit flipped flip FIRTP_BLOCK 3
+expect "a corrupted block" 1 "event [0-9]+ on FIRTP_BLOCK: corrupted: CRC mismatch" "$firtp" replay "$work/flipped.lcmlog"
+expect "no such log" 1 "no log file" "$firtp" replay "$work/none.lcmlog"
+expect "no log given" 2 "missing LOG.lcmlog" "$firtp" replay
+
+# The recorder's accounting, fed by LCM's file:// provider (the same receive path as udpm://).
+expect "record: nothing lost" 0 "nothing lost" \
+  "$firtp" record "$work/copy.lcmlog" --lcm-url "file://$log?speed=0" --idle 1 --duration 30
+expect "record: the copy replays" 0 "result +equal" "$firtp" replay "$work/copy.lcmlog"
+expect "record: missing named" 4 "FIRTP_AXIS_STATE: [0-9]+ messages, missing 12, .*LOST" \
+  "$firtp" record "$work/lost.lcmlog" --lcm-url "file://$work/dropped.lcmlog?speed=0" --idle 1 --duration 30
+edit twice dup FIRTP_STATUS 10
+expect "record: repeats named" 4 "FIRTP_STATUS: [0-9]+ messages, missing 0, repeated [1-9][0-9]*, .*LOST" \
+  "$firtp" record "$work/twice_copy.lcmlog" --lcm-url "file://$work/twice.lcmlog?speed=0" --idle 1 --duration 30
+expect "record: corrupted named" 4 "FIRTP_BLOCK: 4 messages, .*corrupted 1  LOST" \
+  "$firtp" record "$work/flipped_copy.lcmlog" --lcm-url "file://$work/flipped.lcmlog?speed=0" --idle 1 --duration 30
+expect "record --ini: the machine first" 0 "^0 .*FIRTP_CONFIG config_t seq=1 command=serve ini=.*diamond.ini" \
+  bash -c '"$0" record "$1/ini.lcmlog" --ini "$2/diamond.ini" --lcm-url "file://$1/no_config.lcmlog?speed=0" --idle 1 --duration 30 >/dev/null && "$(dirname "$0")/firtp-lcm-dump" "$1/ini.lcmlog" | head -1 | sed "s/^[0-9]* /0 /"' \
+  "$firtp" "$work" "$examples"
+# On a terminal (script(1) gives it one) the replay shows its progress on stderr.
+if command -v script > /dev/null; then
+  expect "progress on a terminal" 0 "replay: [0-9]+ of 1231 axis states \\([0-9]+ %\\)" \
+    script -qec "'$firtp' replay '$log'" /dev/null
+fi
