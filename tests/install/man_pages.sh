@@ -42,7 +42,7 @@ for suffix in $(grep -oE '\{&pins->[a-z_]+, "[a-z-]+"\}' "$src/component/linuxcn
 done
 
 one=$(plain "$src/docs/man/firtp.1")
-for word in plan run serve host simulate "EXIT STATUS" "--version"; do
+for word in plan run serve host simulate record replay "EXIT STATUS" "--version"; do
   grep -qF -- "$word" <<< "$one" || { echo "FAIL: firtp.1 does not mention $word"; fail=1; }
 done
 grep -qE '^ +3 +' <<< "$one" || { echo "FAIL: firtp.1 lists no exit status 3"; fail=1; }
