@@ -16,6 +16,10 @@
 namespace firtp::gcode {
 namespace {
 
+// Without [EMCIO]TOOL_TABLE, tools T1..T999 exist with zero length and diameter (pocket = number),
+// so CAM programs' tool changes and G43 read; their offsets are then zero.
+constexpr int default_tools = 999;
+
 std::filesystem::path make_temporary_directory() {
     const char* tmp = std::getenv("TMPDIR");
     std::string pattern = cat(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp", "/firtp-rs274.XXXXXX");
@@ -64,7 +68,8 @@ InterpreterFiles::InterpreterFiles(const MachineConfig& machine) : parameter_fil
     std::filesystem::path table = machine.tool_table;
     if (table.empty()) {
         table = dir_.path() / "firtp.tbl";
-        std::ofstream{table};
+        std::ofstream out(table);
+        for (int tool = 1; tool <= default_tools; ++tool) out << 'T' << tool << " P" << tool << " Z0 D0\n";
     }
     if (tooldata_load(table.c_str(), nullptr) != 0)
         throw ConfigError(cat(ini, ":0: [EMCIO]TOOL_TABLE ", table.string(), ": cannot be read"));

@@ -1,7 +1,7 @@
 // Files LinuxCNC's interpreter needs beside the program, in a temporary directory: a copy of the
 // machine's parameter file (the interpreter writes it back at the end; the user's stays as it was)
-// or an empty one, and the tool table ([EMCIO]TOOL_TABLE, else empty) loaded into libtooldata's
-// table. Internal to the reader.
+// or an empty one, and the tool table ([EMCIO]TOOL_TABLE, else T1..T999 of zero length and
+// diameter) loaded into libtooldata's table. Internal to the reader.
 #pragma once
 
 #include <firtp/machine.hpp>

@@ -26,7 +26,8 @@
 //
 // Files the interpreter needs: the INI (machine.ini_file, else none), its parameter file
 // ([RS274NGC]PARAMETER_FILE, copied so the program cannot change the user's) and tool table
-// ([EMCIO]TOOL_TABLE), else empty ones, all in a temporary directory removed afterwards.
+// ([EMCIO]TOOL_TABLE), else an empty parameter file and tools T1..T999 of zero length, all in a
+// temporary directory removed afterwards.
 // One program is read at a time in a process (the interpreter is one global object).
 //
 // The program is kept whole in memory: more than machine.max_program_blocks blocks (chords
