@@ -125,9 +125,9 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
         return fail(line, e.what());
     }
     if (const std::size_t made = program_.blocks.size(); static_cast<std::size_t>(chords) > machine_.max_program_blocks - made)
-        return fail(line, cat("the program needs more than ", std::to_string(machine_.max_program_blocks),
-                              " blocks ([FIRTP]MAX_PROGRAM_BLOCKS): this arc's ", std::to_string(chords),
-                              " chords come after ", std::to_string(made), " (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)"));
+        return fail(line, cat(too_many_blocks(), ": this arc's ", std::to_string(chords), " chords come after ",
+                              std::to_string(made), made == 1 ? " block" : " blocks",
+                              " (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)"));
 
     // Inside the arc the chords blend; in G61 / G61.1 with the machine's tolerance.
     const bool blend = termination_ == Termination::blend;
@@ -164,8 +164,7 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     if (!(target.cwiseAbs().maxCoeff() <= max_coordinate)) return fail(line, "the move passes beyond +-1e6 machine units");
     if (!(std::isfinite(feed) && feed > 0.0)) return fail(line, "the move's speed is not a positive finite number");
     if (program_.blocks.size() >= machine_.max_program_blocks)
-        return fail(line, cat("the program needs more than ", std::to_string(machine_.max_program_blocks),
-                              " blocks ([FIRTP]MAX_PROGRAM_BLOCKS)"));
+        return fail(line, too_many_blocks());
     for (Eigen::Index a = machine_.limits.axes; a < max_axes; ++a)
         if (std::abs(target[a] - position_[a]) > zero_length)
             return fail(line, cat("the move turns axis ", std::string(1, axis_letters[static_cast<std::size_t>(a)]),
@@ -179,6 +178,13 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     block.line = line;
     program_.blocks.push_back(block);
     position_ = target;
+}
+
+// The program is kept whole in memory, 112 bytes a block: a few short lines of many-chord arcs
+// would otherwise fill it.
+std::string CanonRecorder::too_many_blocks() const {
+    const std::string most = std::to_string(machine_.max_program_blocks);
+    return cat("the program needs more than ", most, " blocks ([FIRTP]MAX_PROGRAM_BLOCKS = ", most, ")");
 }
 
 void CanonRecorder::spindle_speed(double rpm) {

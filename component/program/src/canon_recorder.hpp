@@ -77,7 +77,8 @@ private:
     void line_block(bool rapid, int line, const AxisVector& target);
     void push(const AxisVector& target, double feed, Termination termination, double tolerance, MotionType type,
               int line);
-    double programmed_speed(bool linear) const;  // mm/s or deg/s; 0 when none
+    double programmed_speed(bool linear) const;
+    std::string too_many_blocks() const;  // mm/s or deg/s; 0 when none
     void fail(int line, const std::string& message);
 
     const MachineConfig& machine_;
