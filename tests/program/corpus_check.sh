@@ -20,7 +20,7 @@ for f in "$corpus"/*; do
   name=$(basename "$f")
   (cd "$work" && timeout 120 "$rs274" -g -t "$work/tools.tbl" "$f" >"$work/canon" 2>"$work/rs274.err" </dev/null)
   rs=$?
-  (ulimit -v 4000000; timeout 300 "$firtp" plan "$f" >"$work/plan.out" 2>"$work/plan.err")  # 4 GB at most
+  (ulimit -v 8000000; timeout 300 "$firtp" plan "$f" >"$work/plan.out" 2>"$work/plan.err")  # 8 GB at most (plan keeps every sample)
   fp=$?
   reason=$(grep -m1 "^firtp: " "$work/plan.err" | cut -c1-110)
   if [ $rs -eq 0 ]; then r=accepts; accepted=$((accepted + 1)); else r=refuses; fi

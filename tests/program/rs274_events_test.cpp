@@ -77,6 +77,18 @@ TEST(Rs274Events, ToolLengthAndParametersFromTheIni) {
     EXPECT_EQ(parse_error("T5 M6\n", m), "t.ngc:1: Requested tool 5 not found in the tool table");
 }
 
+TEST(Rs274Events, StartupCodeRunsBeforeTheProgram) {
+    firtp::MachineConfig m = firtp::default_machine();
+    m.startup_code = "G20 G91";  // as [RS274NGC]RS274NGC_STARTUP_CODE
+    const Program p = parse("G0 X1\nX1\n", m);
+    ASSERT_EQ(p.blocks.size(), 2u);
+    EXPECT_NEAR(p.blocks[1].target[0], 50.8, 1e-9);
+    m.startup_code = "G5";
+    m.ini_file = "machine.ini";
+    EXPECT_EQ(parse_error("G0 X1\n", m),
+              "machine.ini:0: [RS274NGC]RS274NGC_STARTUP_CODE 'G5': All axes missing with motion code");
+}
+
 TEST(Rs274Events, FeedPerRevolutionAndInverseTime) {
     const Program rev = parse("S1000 M3\nG95 G1 F0.1 X10\n");  // 0.1 mm/rev at 1000 rpm: 100 mm/min
     ASSERT_EQ(rev.blocks.size(), 1u);

@@ -69,11 +69,16 @@ public:
         return {file, interp_.sequence_number()};
     }
 
-    GcodeError error(int status) {
+    // LinuxCNC's words for an error status.
+    std::string message(int status) {
         char text[1024] = "";
         interp_.error_text(status, text, sizeof text);
+        return text[0] != '\0' ? text : cat("interpreter status ", std::to_string(status));
+    }
+
+    GcodeError error(int status) {
         const Place at = where();
-        return GcodeError(at.file, at.line, 0, text[0] != '\0' ? text : cat("interpreter status ", std::to_string(status)));
+        return GcodeError(at.file, at.line, 0, message(status));
     }
 
 private:
@@ -109,7 +114,11 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
 
     std::optional<GcodeError> error;
     if (const int status = interp.init(); status > INTERP_MIN_ERROR)
-        error = GcodeError(shown_as, 0, 0, cat("LinuxCNC's interpreter did not start: ", run.error(status).what()));
+        error = GcodeError(shown_as, 0, 0, cat("LinuxCNC's interpreter did not start: ", run.message(status)));
+    else if (const int code = machine.startup_code.empty() ? INTERP_OK : interp.execute(machine.startup_code.c_str());
+             code > INTERP_MIN_ERROR && code != INTERP_EXECUTE_FINISH)
+        error = GcodeError(machine.ini_file.string(), 0, 0,
+                           cat("[RS274NGC]RS274NGC_STARTUP_CODE '", machine.startup_code, "': ", run.message(code)));
     else if (const int open = interp.open(path.c_str()); open > INTERP_MIN_ERROR)
         error = GcodeError(shown_as, 0, 0, "cannot open file");
     while (!error && !recorder.failed()) {

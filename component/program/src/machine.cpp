@@ -91,6 +91,7 @@ void read_interpreter_files(const IniFile& ini, MachineConfig& m) {
     if (const IniFile::Entry* e = ini.find("TRAJ", "LINEAR_UNITS");
         e != nullptr && e->value != "mm" && e->value != "metric" && e->value != "1.0" && e->value != "1")
         fail(ini, *e, cat("'", e->value, "': firtp plans in mm (LINEAR_UNITS = mm); programs may still use G20"));
+    if (const IniFile::Entry* e = ini.find("RS274NGC", "RS274NGC_STARTUP_CODE")) m.startup_code = e->value;
     std::error_code ec;
     const std::filesystem::path ini_path(ini.file_name());
     if (!std::filesystem::is_regular_file(ini_path, ec)) return;  // parsed from text

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -34,6 +35,7 @@ struct MachineConfig {
     // startup codes, ...), [RS274NGC]PARAMETER_FILE and [EMCIO]TOOL_TABLE, the last two relative
     // to the INI's folder as LinuxCNC (started there) reads them. Empty: none.
     std::filesystem::path ini_file, parameter_file, tool_table;
+    std::string startup_code;  // [RS274NGC]RS274NGC_STARTUP_CODE: run before every program, as LinuxCNC's task does
 
     // The paper's fixed chain: filter times given ([FIRTP]T1..T4) or tuned to [FIRTP]MODES.
     // Otherwise every move is smoothed at the axis limits and the filter times are not used.
