@@ -14,6 +14,19 @@
 #include <mutex>
 #include <optional>
 
+// Sanitized builds (docs/HARDENING.md): LinuxCNC's interpreter and the Python it embeds keep
+// allocations for the life of the process, which LeakSanitizer would report at exit.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FIRTP_LSAN_HOOK 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(FIRTP_LSAN_HOOK)
+extern "C" const char* __lsan_default_suppressions() {
+    return "leak:librs274.so\nleak:libpython3\nleak:libpyplugin.so\nleak:libboost_python\n";
+}
+#endif
+
 namespace firtp {
 
 GcodeError::GcodeError(std::string file, int line, int column, const std::string& message)
