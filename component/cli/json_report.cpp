@@ -78,6 +78,15 @@ json measured_json(const PlanRun& run) {
             {"finite", m.finite}};
 }
 
+// Non-motion words in program order: where (file:line) and between which blocks.
+json events_json(const Program& program) {
+    json events = json::array();
+    for (const ProgramEvent& e : program.events)
+        events.push_back({{"kind", std::string(event_name(e.kind))}, {"value", e.value}, {"file", e.file},
+                          {"line", e.line}, {"before_block", e.before_block}, {"motion_waits", event_waits(e.kind)}});
+    return events;
+}
+
 }  // namespace
 
 nlohmann::json json_report(const PlanRun& run, const std::string& program_name) {
@@ -88,6 +97,7 @@ nlohmann::json json_report(const PlanRun& run, const std::string& program_name) 
             {"closed_form_cycle_time_s", run.parameters.fixed_chain ? json(run.closed_form_cycle_time) : json(nullptr)},
             {"feed_time_s", run.feed_time},
             {"corners", corners_json(run)},
+            {"events", events_json(run.program)},
             {"measured", measured_json(run)}};
 }
 

@@ -5,6 +5,7 @@
 #include <firtp/text_cat.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace firtp::cli {
@@ -38,6 +39,24 @@ std::string axis_max(const AxisVector& v, int decimals) {
     return fixed_text(value, decimals) + " (" + axis_letters[static_cast<std::size_t>(axis)] + ")";
 }
 
+// One line per kind of non-motion event, in the order of EventKind (the end, M2/M30, which every
+// program has, only in the JSON).
+void print_events(std::ostream& out, const Program& program) {
+    std::array<std::size_t, event_kinds> count{};
+    double dwell = 0.0;
+    for (const ProgramEvent& e : program.events) {
+        ++count[static_cast<std::size_t>(e.kind)];
+        if (e.kind == EventKind::dwell) dwell += e.value;
+    }
+    for (std::size_t k = 0; k < count.size(); ++k) {
+        const auto kind = static_cast<EventKind>(k);
+        if (count[k] == 0 || kind == EventKind::program_end) continue;
+        out << "event        " << event_name(kind) << " x" << count[k];
+        if (kind == EventKind::dwell) out << " (" << fixed_text(dwell, 3) << " s, not in the cycle time)";
+        out << (event_waits(kind) ? ", motion stops before it\n" : "\n");
+    }
+}
+
 }  // namespace
 
 void print_summary(std::ostream& out, const PlanRun& run, const std::string& program_name,
@@ -57,6 +76,7 @@ void print_summary(std::ostream& out, const PlanRun& run, const std::string& pro
         << " mm/s\n"
         << "axes         max acceleration " << axis_max(m.max_acceleration, 0) << " mm/s^2, jerk "
         << axis_max(m.max_jerk, 0) << " mm/s^3\n";
+    print_events(out, run.program);
     for (const auto& path : written) out << "wrote        " << path.string() << "\n";
 }
 

@@ -267,7 +267,7 @@ TEST(GcodeArc, FeedIsCappedWhereTheFiltersWouldShrinkTheCircle) {
     const double v_cap = cap(20.0, 0.02, 0.0125);  // 26.3 mm/s
     EXPECT_NEAR(time("G64 P0.02\nG3 F6000 X0 Y20 I-20\n"), length / v_cap, 1e-12);
     EXPECT_NEAR(time("G64 P0.02\nG3 F600 X0 Y20 I-20\n"), length / 10.0, 1e-12);  // slower than the cap
-    EXPECT_NEAR(time("G64 P0\nG3 F6000 X0 Y20 I-20\n"), length / 100.0, 1e-12);   // no tolerance: no cap
+    EXPECT_NEAR(time("G64 P0\nG3 F6000 X0 Y20 I-20\n"), length / cap(20.0, 0.05, 0.0125), 1e-12);  // as G64
     EXPECT_NEAR(time("G64 G3 F6000 X0 Y20 I-20\n"), length / cap(20.0, 0.05, 0.0125), 1e-12);
     EXPECT_NEAR(time("G61 G3 F6000 X0 Y20 I-20\n"), length / cap(20.0, 0.05, 0.0125), 1e-12);
     EXPECT_NEAR(time("G64 P0.02\nG1 F6000 X0 Y20\n"), std::hypot(20.0, 20.0) / 100.0, 1e-12);  // lines: no cap

@@ -37,7 +37,7 @@ TEST(GcodeBlockLimit, LineBeyondTheLimitIsNamed) {
     const firtp::MachineConfig m = machine_with("MAX_PROGRAM_BLOCKS = 3\n");
     EXPECT_EQ(parse("G1 F600 X1\nX2\nX2\nX3\n", m).blocks.size(), 3u);  // exactly the limit (X2 twice: no block)
     EXPECT_EQ(parse_error("G1 F600 X1\nX2\nX3\n  G0 X4 M2\n", m),
-              "t.ngc:4:3: the program needs more than 3 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 3)");
+              "t.ngc:4: the program needs more than 3 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 3)");
 }
 
 // A full circle of radius 5 mm at the default 0.001 mm chords: 158 chords.
@@ -45,7 +45,7 @@ TEST(GcodeBlockLimit, ArcBeyondTheLimitIsRefusedBeforeItsChordsAreMade) {
     const std::string program = "G1 F600 X10\nX15\n G3 X15 Y0 I-5 J0\n";
     EXPECT_EQ(parse(program, machine_with("MAX_PROGRAM_BLOCKS = 160\n")).blocks.size(), 160u);
     EXPECT_EQ(parse_error(program, machine_with("MAX_PROGRAM_BLOCKS = 159\n")),
-              "t.ngc:3:2: the program needs more than 159 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 159): this arc's 158 "
+              "t.ngc:3: the program needs more than 159 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 159): this arc's 158 "
               "chords come after 2 blocks (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)");
 }
 
@@ -56,7 +56,7 @@ TEST(GcodeBlockLimit, ShortFileOfManyChordArcsIsRefused) {
     for (int i = 0; i < 100; ++i) program += "G2 X10 Y0 I-10 J0 P450\n";
     const firtp::MachineConfig m = machine_with("MAX_PROGRAM_BLOCKS = 100000\n");
     EXPECT_EQ(parse_error(program, m),
-              "t.ngc:3:1: the program needs more than 100000 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 100000): this arc's "
+              "t.ngc:3: the program needs more than 100000 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 100000): this arc's "
               "99965 chords come after 99966 blocks (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)");
 }
 

@@ -1,3 +1,5 @@
+#include "gcode_test_support.hpp"
+
 #include <firtp/gcode.hpp>
 
 #include <gtest/gtest.h>
@@ -17,7 +19,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 firtp::Program parse(std::string_view text, const MachineConfig& machine = firtp::default_machine(),
                      const AxisVector& start = AxisVector::Zero()) {
-    return firtp::parse_gcode(text, "t.ngc", machine, start);
+    return firtp::parse_gcode(std::string(text) + "\nM2\n", "t.ngc", machine, start);
 }
 
 AxisVector xyz(double x, double y, double z = 0.0) {
@@ -137,7 +139,8 @@ TEST(Gcode, ExactStopAndTolerances) {
     EXPECT_EQ(p.blocks[2].termination, Termination::blend);
     EXPECT_DOUBLE_EQ(p.blocks[2].tolerance, 0.05);  // machine default
     EXPECT_DOUBLE_EQ(p.blocks[3].tolerance, 0.2);
-    EXPECT_EQ(p.blocks[4].tolerance, inf);  // P0: no tolerance, as in LinuxCNC
+    // LinuxCNC's canon reports G64 P0 as it reports G64: the machine's tolerance (not none).
+    EXPECT_DOUBLE_EQ(p.blocks[4].tolerance, 0.05);
     EXPECT_EQ(p.blocks[4].termination, Termination::blend);
     EXPECT_EQ(p.blocks[5].termination, Termination::exact_stop);
     EXPECT_EQ(p.blocks[5].type, MotionType::traverse);
@@ -188,7 +191,8 @@ TEST(Gcode, CommentsAreSkipped) {
 }
 
 TEST(Gcode, PercentLinesDelimitTheProgram) {
-    const firtp::Program p = parse("%\nG1 F60 X1\n  %  (end)\nG1 X99\nnot G-code at all\n");
+    const firtp::Program p = firtp::parse_gcode("%\nG1 F60 X1\n%\nG1 X99\nnot G-code at all\n", "t.ngc",
+                                                firtp::default_machine());
     ASSERT_EQ(p.blocks.size(), 1u);
     expect_target(p.blocks[0], xyz(1, 0));
     EXPECT_EQ(p.blocks[0].line, 2);
@@ -206,7 +210,9 @@ TEST(Gcode, LinesAfterProgramEndAreIgnored) {
 
 TEST(Gcode, EmptyProgram) {
     EXPECT_TRUE(parse("").blocks.empty());
-    EXPECT_TRUE(parse("\n\n(nothing)\n%\n%\n").blocks.empty());
+    EXPECT_TRUE(firtp::parse_gcode("%\n(nothing)\n%\n", "t.ngc", firtp::default_machine()).blocks.empty());
+    // LinuxCNC: a '%' opens the program only on its first line.
+    EXPECT_EQ(firtp::test::parse_error("\n(nothing)\n%\n"), "t.ngc:3: Bad character '%' used");
 }
 
 }  // namespace

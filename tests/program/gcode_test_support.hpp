@@ -10,15 +10,18 @@
 
 namespace firtp::test {
 
+// LinuxCNC refuses a file that ends with neither M2/M30 nor '%': snippets get an M2.
+inline std::string ended(std::string_view text) { return std::string(text) + "\nM2\n"; }
+
 inline Program parse(std::string_view text, const MachineConfig& machine = default_machine(),
                      const AxisVector& start = AxisVector::Zero()) {
-    return parse_gcode(text, "t.ngc", machine, start);
+    return parse_gcode(ended(text), "t.ngc", machine, start);
 }
 
 // "no error" or the GcodeError's message.
 inline std::string parse_error(std::string_view text, const MachineConfig& machine = default_machine()) {
     try {
-        parse_gcode(text, "t.ngc", machine);
+        parse_gcode(ended(text), "t.ngc", machine);
     } catch (const GcodeError& e) {
         return e.what();
     }

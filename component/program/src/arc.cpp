@@ -33,30 +33,6 @@ ArcPlane arc_plane(int plane_code) {
     }
 }
 
-ArcTolerances arc_tolerances(double mm_per_unit) {
-    ArcTolerances t;
-    t.radius_difference = 2.0 * (mm_per_unit == 1.0 ? 0.01 : 0.001) * std::numbers::sqrt2 * mm_per_unit;
-    return t;
-}
-
-Eigen::Vector2d centre_from_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double radius,
-                                   bool clockwise, double reach_tolerance) {
-    if ((end - start).norm() <= zero_length)
-        throw ArcError("an R arc cannot be a full circle: the end point equals the start point (use I J K)");
-    const double r = std::abs(radius);
-    const Eigen::Vector2d mid = (start + end) / 2.0;
-    double half = (end - mid).norm();
-    if (half - r > reach_tolerance)
-        throw ArcError(cat("radius ", mm(r), " mm is too small to reach the end point (half the chord is ", mm(half),
-                           " mm)"));
-    if (half / r > 1.0 - 1e-12) half = r;  // a half circle, within rounding
-    const bool right = clockwise == (radius > 0.0);
-    const double theta = std::atan2(end.y() - start.y(), end.x() - start.x()) +
-                         (right ? -std::numbers::pi / 2 : std::numbers::pi / 2);
-    const double offset = r * std::cos(std::asin(half / r));
-    return mid + offset * Eigen::Vector2d(std::cos(theta), std::sin(theta));
-}
-
 Arc make_arc(const ArcPlane& plane, const AxisVector& start, const AxisVector& end, const Eigen::Vector2d& centre,
              bool clockwise, int turns, const ArcTolerances& tolerances) {
     Arc arc;

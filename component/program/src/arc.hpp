@@ -1,5 +1,5 @@
-// Arc geometry for G2/G3: the centre (I J K or R), the swept angle, points along the arc and how
-// many chords approximate it. Internal to the G-code reader; lengths in mm, angles in radians.
+// Arc geometry for ARC_FEED (G2/G3): the swept angle, points along the arc and how many chords
+// approximate it. Internal to the G-code reader; lengths in mm, angles in radians.
 #pragma once
 
 #include <firtp/types.hpp>
@@ -20,24 +20,18 @@ struct ArcPlane {
 };
 ArcPlane arc_plane(int plane_code);  // 170, 180 or 190
 
-// A geometric problem with the arc as programmed; the reader adds file, line and column.
+// A geometric problem with the arc; the reader adds file and line.
 class ArcError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-// LinuxCNC's interpreter tolerances (interp_internal.hh), in mm for the program's units.
+// Radius tolerances (LinuxCNC's interpreter has checked its own before the canon sees an arc).
 struct ArcTolerances {
-    double min_radius = 0.00127;        // RADIUS_TOLERANCE: shorter radii are zero; also R's reach
-    double radius_difference = 0.0;     // CENTER_ARC_RADIUS_TOLERANCE: 2 * 0.01 * sqrt 2 mm, 2 * 0.001 * sqrt 2 in
-    double relative_difference = 0.001; // SPIRAL_RELATIVE_TOLERANCE
+    double min_radius = 0.0;           // shorter radii are zero
+    double radius_difference = 0.0;    // start and end radii may differ by this much (mm)
+    double relative_difference = 0.0;  // and by this share of the larger
 };
-ArcTolerances arc_tolerances(double mm_per_unit);
-
-// Centre of the arc of radius |radius| from start to end (R < 0: the arc longer than half a turn),
-// as LinuxCNC's arc_data_r finds it. Throws ArcError when start equals end or |radius| is too small.
-Eigen::Vector2d centre_from_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double radius,
-                                   bool clockwise, double reach_tolerance);
 
 // A circular or (within the tolerance) spiral arc: the radius changes linearly with the angle and
 // every axis other than the plane's two moves linearly with it (helix).

@@ -86,6 +86,25 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
     }
 }
 
+// What LinuxCNC's interpreter reads beside the INI; LINEAR_UNITS as LinuxCNC spells mm.
+void read_interpreter_files(const IniFile& ini, MachineConfig& m) {
+    if (const IniFile::Entry* e = ini.find("TRAJ", "LINEAR_UNITS");
+        e != nullptr && e->value != "mm" && e->value != "metric" && e->value != "1.0" && e->value != "1")
+        fail(ini, *e, cat("'", e->value, "': firtp plans in mm (LINEAR_UNITS = mm); programs may still use G20"));
+    if (const IniFile::Entry* e = ini.find("RS274NGC", "RS274NGC_STARTUP_CODE")) m.startup_code = e->value;
+    std::error_code ec;
+    const std::filesystem::path ini_path(ini.file_name());
+    if (!std::filesystem::is_regular_file(ini_path, ec)) return;  // parsed from text
+    m.ini_file = std::filesystem::absolute(ini_path, ec);
+    const auto beside = [&](std::string_view section, std::string_view key) -> std::filesystem::path {
+        const IniFile::Entry* e = ini.find(section, key);
+        if (e == nullptr || e->value.empty()) return {};
+        return m.ini_file.parent_path() / e->value;
+    };
+    m.parameter_file = beside("RS274NGC", "PARAMETER_FILE");
+    m.tool_table = beside("EMCIO", "TOOL_TABLE");
+}
+
 void read_firtp(const IniFile& ini, MachineConfig& m) {
     static constexpr std::string_view known[] = {"STAGES",    "T1", "T2", "T3", "T4", "MODES",
                                                  "TOLERANCE", "TOLERANCE_MEANING", "ARC_CHORD_TOLERANCE",
@@ -279,6 +298,7 @@ MachineConfig default_machine() {
 
 MachineConfig load_machine(const IniFile& ini) {
     MachineConfig m = default_machine();
+    read_interpreter_files(ini, m);
     read_period(ini, m);
     read_axes(ini, m);
     read_firtp(ini, m);

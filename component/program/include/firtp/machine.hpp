@@ -6,7 +6,9 @@
 #include <firtp/parameters.hpp>
 
 #include <cstddef>
+#include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -29,6 +31,11 @@ struct MachineConfig {
     double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
     double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: fixed chain: share of a and j kept for override ramps
     std::size_t max_program_blocks = default_max_program_blocks;  // [FIRTP]MAX_PROGRAM_BLOCKS (whole, >= 1)
+    // For LinuxCNC's interpreter (gcode.hpp): the INI it reads ([RS274NGC] SUBROUTINE_PATH,
+    // startup codes, ...), [RS274NGC]PARAMETER_FILE and [EMCIO]TOOL_TABLE, the last two relative
+    // to the INI's folder as LinuxCNC (started there) reads them. Empty: none.
+    std::filesystem::path ini_file, parameter_file, tool_table;
+    std::string startup_code;  // [RS274NGC]RS274NGC_STARTUP_CODE: run before every program, as LinuxCNC's task does
 
     // The paper's fixed chain: filter times given ([FIRTP]T1..T4) or tuned to [FIRTP]MODES.
     // Otherwise every move is smoothed at the axis limits and the filter times are not used.
@@ -45,7 +52,8 @@ struct MachineConfig {
 // 0.05 mm tolerance, 0.001 mm arc chords.
 MachineConfig default_machine();
 
-// Reads the keys above over default_machine(). Throws ConfigError naming file, line and key for a
+// Reads the keys above over default_machine(). [TRAJ]LINEAR_UNITS must be mm (or absent): firtp
+// plans in mm. Throws ConfigError naming file, line and key for a
 // value that is not a number, is out of range (zero, negative, NaN) or a [FIRTP] key it does not know.
 MachineConfig load_machine(const IniFile& ini);
 
