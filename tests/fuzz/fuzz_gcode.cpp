@@ -18,6 +18,7 @@ namespace {
 
 firtp::MachineConfig machine(std::uint8_t choice) {
     firtp::MachineConfig m = firtp::default_machine();
+    m.max_program_blocks = 20000;  // bounds every input: a loop that never moves ends after as many lines
     if (choice % 3 == 1) {  // five axes X Y Z A B with limits, coarser chords
         m.limits.axes = 5;
         for (int a = 3; a < 5; ++a) m.limits.axis[a] = {3600.0, 36000.0, 1e6};

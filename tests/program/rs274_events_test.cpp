@@ -125,4 +125,23 @@ TEST(Rs274Events, RefusalsNameFileLineAndLinuxCncsReason) {
     }
 }
 
+// An O-word loop that never moves runs forever in LinuxCNC; here it is refused at its line once more
+// lines ran without a move than the program may have blocks.
+TEST(Rs274Events, EndlessLoopWithoutMotionIsRefused) {
+    firtp::MachineConfig m = firtp::default_machine();
+    m.max_program_blocks = 5000;
+    try {
+        firtp::parse_gcode("G1 F100 X1\n#1 = 0\no100 while [1]\n#1 = [#1 + 1]\no100 endwhile\nM2\n", "loop.ngc", m);
+        FAIL() << "no error";
+    } catch (const firtp::GcodeError& e) {
+        EXPECT_EQ(std::string(e.what()).find("loop.ngc:"), 0u) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lines ran without a move: an endless loop?"), std::string::npos) << e.what();
+        EXPECT_GE(e.line(), 3);
+        EXPECT_LE(e.line(), 5);
+    }
+    // A loop that moves on every pass is a program, however long.
+    const firtp::Program p = firtp::parse_gcode("G1 F100 X0\n#1 = 0\no100 while [#1 LT 3000]\nG1 X[#1 MOD 2 + 1]\n#1 = [#1 + 1]\no100 endwhile\nM2\n", "moves.ngc", m);
+    EXPECT_GE(p.blocks.size(), 3000u);
+}
+
 }  // namespace

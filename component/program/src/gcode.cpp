@@ -134,7 +134,18 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
                            cat("[RS274NGC]RS274NGC_STARTUP_CODE '", machine.startup_code, "': ", run.message(code)));
     else if (const int open = interp.open(path.c_str()); open > INTERP_MIN_ERROR)
         error = GcodeError(shown_as, 0, 0, "cannot open file");
+    // A loop that never moves (an O-word while with no motion) would run forever, as in LinuxCNC:
+    // refused once more lines than a program may have blocks ran without a block or an event.
+    std::size_t idle_lines = 0, seen = 0;
     while (!error && !recorder.failed()) {
+        if (const std::size_t made = program.blocks.size() + program.events.size(); made != seen) seen = made, idle_lines = 0;
+        if (++idle_lines > std::max<std::size_t>(machine.max_program_blocks, 1000)) {
+            const Place at = run.where();
+            error = GcodeError(at.file, at.line, 0,
+                               cat("more than ", std::to_string(std::max<std::size_t>(machine.max_program_blocks, 1000)),
+                                   " lines ran without a move: an endless loop?"));
+            break;
+        }
         const int read = interp.read();
         if (read == INTERP_ENDFILE) break;
         if (read > INTERP_MIN_ERROR) {
