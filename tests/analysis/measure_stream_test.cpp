@@ -79,7 +79,7 @@ std::vector<AxisState> random_samples(std::mt19937& rng, const std::vector<AxisV
 
 TEST(MeasureStream, EqualsTheBatchMeasurementOnRandomPaths) {
     std::mt19937 rng(14);
-    for (int run = 0; run < 300; ++run) {
+    for (int run = 0; run < 1000; ++run) {
         const std::size_t count = 2 + static_cast<std::size_t>(run % 60);
         const std::vector<AxisVector> points = random_points(rng, count);
         const double stray = (run % 3) * 0.02;

@@ -144,10 +144,10 @@ void MeasureStream::close_open_below(std::size_t j) {
 void MeasureStream::chord(std::size_t c, bool has_next) {
     const std::size_t s0 = tracked_[c % 2], s1 = tracked_[(c + 1) % 2];
     if (c == 0)
-        for (std::size_t j = 1; j < s0 && j <= last_; ++j) close_corner(j, chord_distance(0, j));
+        for (std::size_t j = 1; j < s0 && j <= last_; ++j) close_corner(j, std::min(inf, chord_distance(0, j)));
     for (std::size_t j = std::max<std::size_t>(s0, 1); j <= std::min(s1 + 1, last_); ++j) {
         if (j >= s0 + 2 && j < s1) continue;  // jumped past: below
-        const double d = chord_distance(c, j);
+        const double d = std::min(inf, chord_distance(c, j));  // NaN (a sample that is not finite) counts as none
         auto open = std::find_if(open_.begin(), open_.end(), [&](const auto& o) { return o.first == j; });
         if (open == open_.end()) open_.emplace_back(j, d);
         else open->second = std::min(open->second, d);
