@@ -29,7 +29,7 @@ Segment chord(const AxisVector& a, const AxisVector& b) {
 }
 
 // Distances closer than this count as equal (rounding on overlapping segments).
-double tie_tolerance(const std::vector<AxisVector>& points) {
+double tie_tolerance(std::span<const AxisVector> points) {
     double scale = 1.0;
     for (const AxisVector& p : points) scale = std::max(scale, p.cwiseAbs().maxCoeff());
     return 1e-10 * scale;
@@ -39,9 +39,18 @@ double tie_tolerance(const std::vector<AxisVector>& points) {
 
 MeasureStream::MeasureStream(std::span<const AxisVector> points, double period, CornerCallback on_corner)
     : period_(period), on_corner_(std::move(on_corner)) {
-    // Zero-length blocks (as the planner skips them) repeat a point; drop the repeats.
-    for (const AxisVector& p : points)
-        if (points_.empty() || (p - points_.back()).norm() >= min_block_length) points_.push_back(p);
+    // Zero-length blocks (as the planner skips them) repeat a point; drop the repeats (a copy only
+    // where there are any: a long program's points are not held twice).
+    const auto distinct = [](const AxisVector& a, const AxisVector& b) { return (b - a).norm() >= min_block_length; };
+    bool repeats = false;
+    for (std::size_t i = 1; i < points.size() && !repeats; ++i) repeats = !distinct(points[i - 1], points[i]);
+    if (repeats) {
+        for (const AxisVector& p : points)
+            if (own_.empty() || distinct(own_.back(), p)) own_.push_back(p);
+        points_ = own_;
+    } else {
+        points_ = points;
+    }
     if (points_.size() >= 2) last_ = points_.size() - 2;
     tie_ = tie_tolerance(points_);
 }

@@ -34,7 +34,7 @@ Measured measure(std::span<const AxisState> samples, std::span<const AxisVector>
 
 // The same measurement, one sample at a time, with state bounded by the path the tool strays
 // over (not by the number of samples): add() every sample in order, then finish(). The result is
-// bit for bit measure()'s. `on_corner(index, error)` is told each corner error (index into
+// bit for bit measure()'s. `points` must outlive the stream. `on_corner(index, error)` is told each corner error (index into
 // Measured::corner_errors) as soon as no later sample can change it.
 class MeasureStream {
 public:
@@ -64,7 +64,8 @@ private:
     void close_corner(std::size_t j, double error);
     void close_open_below(std::size_t j);
 
-    std::vector<AxisVector> points_;  // distinct programmed points
+    std::vector<AxisVector> own_;       // the distinct points, where `points` repeats one
+    std::span<const AxisVector> points_;  // distinct programmed points (the caller's when it has no repeats)
     std::size_t last_ = 0;            // index of the last segment
     double period_;
     double tie_ = 0.0;
