@@ -40,28 +40,30 @@ json axis_name(int axis) {
     return axis >= 0 ? json(std::string(1, axis_letters[static_cast<std::size_t>(axis)])) : json(nullptr);
 }
 
+json corner_json(const PlanRun& run, std::size_t i) {
+    const CornerReport& c = run.trajectory.corners[i];
+    const auto& measured = run.corner_errors[i];
+    json corner = {{"line", c.line},
+                   {"point", xyz(c.point)},
+                   {"beta_deg", c.beta * 180.0 / std::numbers::pi},
+                   {"speed_in_mm_s", c.speed_in},
+                   {"speed_out_mm_s", c.speed_out},
+                   {"bound", describe(c.bound)},
+                   {"bound_axis", axis_name(c.axis)},
+                   {"epsilon_mm", finite_or_null(c.epsilon)},
+                   {"predicted_error_mm", c.predicted_error},
+                   {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
+                   {"exact_stop", c.exact_stop}};
+    if (run.parameters.fixed_chain) {
+        corner["tk_s"] = c.tk;
+        corner["tk_tolerance_s"] = c.tk_tolerance;
+    }
+    return corner;
+}
+
 json corners_json(const PlanRun& run) {
     json corners = json::array();
-    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) {
-        const CornerReport& c = run.trajectory.corners[i];
-        const auto& measured = run.corner_errors[i];
-        json corner = {{"line", c.line},
-                       {"point", xyz(c.point)},
-                       {"beta_deg", c.beta * 180.0 / std::numbers::pi},
-                       {"speed_in_mm_s", c.speed_in},
-                       {"speed_out_mm_s", c.speed_out},
-                       {"bound", describe(c.bound)},
-                       {"bound_axis", axis_name(c.axis)},
-                       {"epsilon_mm", finite_or_null(c.epsilon)},
-                       {"predicted_error_mm", c.predicted_error},
-                       {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
-                       {"exact_stop", c.exact_stop}};
-        if (run.parameters.fixed_chain) {
-            corner["tk_s"] = c.tk;
-            corner["tk_tolerance_s"] = c.tk_tolerance;
-        }
-        corners.push_back(corner);
-    }
+    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) corners.push_back(corner_json(run, i));
     return corners;
 }
 
@@ -89,16 +91,38 @@ json events_json(const Program& program) {
 
 }  // namespace
 
-nlohmann::json json_report(const PlanRun& run, const std::string& program_name) {
+nlohmann::json json_report(const PlanRun& run, const std::string& program_name, bool with_corners) {
     return {{"program", program_name},
             {"machine", machine_json(run)},
             {"blocks", run.points.size() - 1},
             {"cycle_time_s", run.trajectory.cycle_time},
             {"closed_form_cycle_time_s", run.parameters.fixed_chain ? json(run.closed_form_cycle_time) : json(nullptr)},
             {"feed_time_s", run.feed_time},
-            {"corners", corners_json(run)},
+            {"corners", with_corners ? corners_json(run) : json::array()},
             {"events", events_json(run.program)},
             {"measured", measured_json(run)}};
+}
+
+void write_json_report(std::ostream& out, const PlanRun& run, const std::string& program_name) {
+    const std::string text = json_report(run, program_name, false).dump(2);
+    const std::string empty = "\"corners\": []";
+    const std::size_t at = text.find(empty);
+    if (at == std::string::npos || run.trajectory.corners.empty()) {
+        out << text << "\n";
+        return;
+    }
+    // Each corner as dump(2) writes it two levels down: every line indented by four spaces.
+    out << text.substr(0, at) << "\"corners\": [\n";
+    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) {
+        const std::string corner = corner_json(run, i).dump(2);
+        std::string indented = i ? ",\n    " : "    ";
+        for (char ch : corner) {
+            indented += ch;
+            if (ch == '\n') indented += "    ";
+        }
+        out << indented;
+    }
+    out << "\n  ]" << text.substr(at + empty.size()) << "\n";
 }
 
 }  // namespace firtp::cli

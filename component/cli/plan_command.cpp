@@ -5,6 +5,8 @@
 #include "plan_options.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
+#include "plan_sink.hpp"
+#include "progress_line.hpp"
 #include "report.hpp"
 #include "summary.hpp"
 
@@ -22,8 +24,17 @@ int plan_command(std::span<const std::string> args) {
     // Before the planning work: a missing gnuplot fails at once.
     const std::optional<std::filesystem::path> gnuplot =
         options.plot || options.report ? std::optional(find_gnuplot()) : std::nullopt;
-    const PlanRun run = run_plan(options);
-    std::vector<std::filesystem::path> written = write_outputs(run, options, gnuplot);
+    PlanRun run = prepare_plan(options);
+    PlanOutputs outputs(options);
+    std::vector<std::filesystem::path> written;
+    {
+        ProgressLine progress("plan", run.points.size() - 1);
+        PlanSink sink(run, outputs.csv(), &progress, options.report.has_value());  // --report: keeps the samples
+        plan_program(run, sink);
+        sink.finish();
+        progress.clear();
+        written = outputs.finish(run, sink.plot(), gnuplot);
+    }
     if (options.report)
         for (const auto& file : write_report(run, options, *gnuplot)) written.push_back(file);
     print_summary(std::cout, run, options.program.filename().string(), written);

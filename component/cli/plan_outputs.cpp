@@ -1,30 +1,33 @@
 #include "plan_outputs.hpp"
 
-#include "csv_writer.hpp"
 #include "json_report.hpp"
-#include "output_files.hpp"
 #include "plot.hpp"
+
+#include <stdexcept>
 
 namespace firtp::cli {
 
-std::vector<std::filesystem::path> write_outputs(const PlanRun& run, const PlanOptions& options,
-                                                 const std::optional<std::filesystem::path>& gnuplot) {
-    OutputFiles outputs;
+PlanOutputs::PlanOutputs(const PlanOptions& options) : options_(options) {
+    if (options.csv) csv_.emplace(files_.create(*options.csv), std::ios::binary);
+}
+
+std::vector<std::filesystem::path> PlanOutputs::finish(const PlanRun& run, const PlotSamples& plot,
+                                                       const std::optional<std::filesystem::path>& gnuplot) {
     std::vector<std::filesystem::path> written;
-    if (options.csv) {
-        outputs.write(*options.csv, [&](std::ostream& out) { write_csv(out, run.trajectory.samples); });
-        written.push_back(*options.csv);
+    if (csv_) {
+        csv_->close();
+        if (!*csv_) throw std::runtime_error("cannot write '" + options_.csv->string() + "'");
+        written.push_back(*options_.csv);
     }
-    if (options.json) {
-        outputs.write(*options.json,
-                      [&](std::ostream& out) { out << json_report(run, options.program.string()).dump(2) << "\n"; });
-        written.push_back(*options.json);
+    if (options_.json) {
+        files_.write(*options_.json, [&](std::ostream& out) { write_json_report(out, run, options_.program.string()); });
+        written.push_back(*options_.json);
     }
-    if (options.plot) {
-        write_plot(run, options.program.filename().string(), *gnuplot, outputs.create(*options.plot));
-        written.push_back(*options.plot);
+    if (options_.plot) {
+        write_plot(run, plot, options_.program.filename().string(), *gnuplot, files_.create(*options_.plot));
+        written.push_back(*options_.plot);
     }
-    outputs.commit();
+    files_.commit();
     return written;
 }
 

@@ -6,9 +6,6 @@
 #include <string>
 
 namespace firtp::cli {
-namespace {
-
-}  // namespace
 
 MachineConfig load_machine_config(const PlanOptions& options) {
     MachineConfig machine = options.ini ? load_machine(IniFile::read(*options.ini)) : default_machine();
@@ -46,31 +43,50 @@ std::vector<AxisVector> moving_points(const Program& program, double& tv_sum) {
     return points;
 }
 
-Trajectory plan(const PlannerParameters& parameters, const Program& program) {
-    try {
-        return plan_trajectory(parameters, program.start, program.blocks);
-    } catch (const std::invalid_argument& e) {
-        throw std::runtime_error(program.file + ": " + e.what());
-    }
-}
-
 }  // namespace
 
-PlanRun run_plan(const PlanOptions& options) {
+PlanRun prepare_plan(const PlanOptions& options) {
     PlanRun run;
     run.machine = load_machine_config(options);
     run.parameters = run.machine.planner_parameters();
     run.program = read_gcode(options.program, run.machine);
-    run.trajectory = plan(run.parameters, run.program);
+    run.points = moving_points(run.program, run.feed_time);
+    run.trajectory.start = run.program.start;
+    return run;
+}
+
+void plan_program(PlanRun& run, TrajectorySink& sink) {
+    try {
+        const StreamedTrajectory streamed = plan_trajectory(run.parameters, run.program.start, run.program.blocks, sink);
+        run.trajectory.cycle_time = streamed.cycle_time;
+        run.trajectory.stats = streamed.stats;
+        run.sample_count = streamed.samples;
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(run.program.file + ": " + e.what());
+    }
+}
+
+PlanRun run_plan(const PlanOptions& options) {
+    PlanRun run = prepare_plan(options);
+    struct Keep : TrajectorySink {
+        Trajectory& t;
+        explicit Keep(Trajectory& into) : t(into) {}
+        void sample(const AxisState& state) override { t.samples.push_back(state); }
+        void corner(const CornerReport& report) override { t.corners.push_back(report); }
+    } keep(run.trajectory);
+    plan_program(run, keep);
     measure_plan(run);
     return run;
 }
 
 void measure_plan(PlanRun& run) {
-    double tv_sum = 0.0;
-    run.points = moving_points(run.program, tv_sum);
-    run.measured = measure(run.trajectory.samples, run.points, run.parameters.period);
-    if (!run.trajectory.samples.empty()) run.trajectory.cycle_time = run.trajectory.samples.back().time;
+    run.sample_count = run.trajectory.samples.size();
+    take_measurement(run, measure(run.trajectory.samples, run.points, run.parameters.period));
+}
+
+void take_measurement(PlanRun& run, Measured measured) {
+    run.measured = std::move(measured);
+    if (run.sample_count > 0) run.trajectory.cycle_time = run.measured.cycle_time;
 
     // Interior points and corners are the same junctions, in order, when both skipped the same blocks.
     const auto& corners = run.trajectory.corners;
@@ -79,13 +95,12 @@ void measure_plan(PlanRun& run) {
     for (std::size_t i = 0; i < corners.size(); ++i)
         run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
 
-    run.feed_time = tv_sum;
     run.closed_form_cycle_time = 0.0;
     if (run.parameters.fixed_chain && run.points.size() > 1) {
         const double td = run.parameters.filters.delay();
         double gaps = 0.0;
         for (const CornerReport& c : corners) gaps += td - c.tk;
-        run.closed_form_cycle_time = tv_sum + gaps + td;
+        run.closed_form_cycle_time = run.feed_time + gaps + td;
     }
 }
 

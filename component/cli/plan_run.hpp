@@ -17,7 +17,8 @@ struct PlanRun {
     MachineConfig machine;
     PlannerParameters parameters;
     Program program;
-    Trajectory trajectory;
+    Trajectory trajectory;           // samples only where kept (--report, run's reference)
+    std::size_t sample_count = 0;    // samples planned (or received), kept or not
     std::vector<AxisVector> points;  // start, then the end of every block that moves
     Measured measured;
     std::vector<std::optional<double>> corner_errors;  // measured, one per trajectory.corners entry
@@ -28,11 +29,23 @@ struct PlanRun {
 // The machine: INI or built-in, then the flag overrides (UsageError names a bad flag).
 MachineConfig load_machine_config(const PlanOptions& options);
 
-// Loads the machine (INI or built-in, then overrides), reads and plans the program, measures it.
-// Throws UsageError for bad flag values, ConfigError / GcodeError / std::runtime_error otherwise.
+// Loads the machine (INI or built-in, then overrides) and reads the program: everything but the
+// plan. Throws UsageError for bad flag values, ConfigError / GcodeError otherwise.
+PlanRun prepare_plan(const PlanOptions& options);
+
+// Plans run.program, handing every sample and corner report to `sink` as it is made; sets
+// run.trajectory's cycle time and stats and run.sample_count. Throws std::runtime_error naming the
+// file and line of an invalid block.
+void plan_program(PlanRun& run, TrajectorySink& sink);
+
+// prepare_plan, then the plan keeping every sample, measured (measure_plan).
 PlanRun run_plan(const PlanOptions& options);
 
-// Measures run.trajectory.samples against run.program (points, maxima, corner errors, closed form).
+// Measures run.trajectory.samples against run.program (maxima, corner errors, closed form).
 void measure_plan(PlanRun& run);
+
+// What a measurement of the samples gives the run: run.measured, the corner errors paired with
+// the corner reports, the closed form.
+void take_measurement(PlanRun& run, Measured measured);
 
 }  // namespace firtp::cli

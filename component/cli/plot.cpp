@@ -12,11 +12,7 @@
 namespace firtp::cli {
 namespace {
 
-constexpr std::size_t max_zooms = 4;
-constexpr std::size_t max_overview_rows = 4000;  // samples drawn in the overview and time plots
-constexpr double min_zoom_window = 0.5;          // mm
-constexpr double zoom_window_factor = 6.0;       // window = this x (tolerance or error)
-constexpr double collinear_beta = 1e-6;          // rad: joined blocks, nothing to zoom on
+constexpr std::size_t max_program_rows = 20000;  // programmed points drawn (every k-th beyond)
 
 // Script text builder: numbers in round-trip form, lines ended by '\n'.
 struct Script {
@@ -28,68 +24,30 @@ struct Script {
     Script& operator<<(std::size_t v) { text += std::to_string(v); return *this; }
 };
 
-struct Zoom {
-    std::size_t corner = 0;  // index into trajectory.corners
-    double half_width = 0.0;
-};
-
-double corner_size(const PlanRun& run, std::size_t i) {
-    const CornerReport& c = run.trajectory.corners[i];
-    const double tolerance = !c.exact_stop && std::isfinite(c.epsilon) ? c.epsilon : 0.0;
-    return std::max(tolerance, run.corner_errors[i].value_or(c.predicted_error));
+void row(Script& s, const Eigen::Vector2d& xy) {
+    if (xy.allFinite()) s << xy[0] << " " << xy[1] << "\n";
+    else s << "\n";  // a run leaving the zoom window
 }
 
-// Up to four real corners with the largest measured errors, in program order.
-std::vector<Zoom> pick_zooms(const PlanRun& run) {
-    std::vector<std::size_t> candidates;
-    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i)
-        if (run.trajectory.corners[i].beta > collinear_beta) candidates.push_back(i);
-    const auto error = [&](std::size_t i) { return run.corner_errors[i].value_or(0.0); };
-    std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) { return error(a) > error(b); });
-    candidates.resize(std::min(candidates.size(), max_zooms));
-    std::sort(candidates.begin(), candidates.end());
-    std::vector<Zoom> zooms;
-    for (std::size_t i : candidates)
-        zooms.push_back({i, 0.5 * std::max(min_zoom_window, zoom_window_factor * corner_size(run, i))});
-    return zooms;
-}
-
-std::size_t stride(std::size_t rows) { return std::max<std::size_t>(1, (rows + max_overview_rows - 1) / max_overview_rows); }
-
-void data_blocks(Script& s, const PlanRun& run, const std::vector<Zoom>& zooms) {
-    const auto& samples = run.trajectory.samples;
-    const std::size_t step = stride(samples.size());
-    const auto sampled = [&](auto&& row) {
-        for (std::size_t i = 0; i < samples.size(); i += step) row(samples[i]);
-        if ((samples.size() - 1) % step != 0) row(samples.back());
-    };
+void data_blocks(Script& s, const PlanRun& run, const PlotSamples& plot) {
+    const std::size_t step = std::max<std::size_t>(1, (run.points.size() + max_program_rows - 1) / max_program_rows);
     s << "$program << EOD\n";
-    for (const AxisVector& p : run.points) s << p[0] << " " << p[1] << "\n";
+    for (std::size_t i = 0; i < run.points.size(); i += step) s << run.points[i][0] << " " << run.points[i][1] << "\n";
+    if ((run.points.size() - 1) % step != 0) s << run.points.back()[0] << " " << run.points.back()[1] << "\n";
     s << "EOD\n$path << EOD\n";
-    sampled([&](const AxisState& a) { s << a.position[0] << " " << a.position[1] << "\n"; });
+    for (const auto& r : plot.path.rows()) s << r[0] << " " << r[1] << "\n";
     s << "EOD\n$time << EOD\n";
-    sampled([&](const AxisState& a) {
-        s << a.time << " " << a.velocity.head<3>().norm() << " " << a.acceleration[0] << " " << a.acceleration[1]
-          << " " << a.acceleration[2] << "\n";
-    });
+    for (const auto& r : plot.time.rows()) s << r[0] << " " << r[1] << " " << r[2] << " " << r[3] << " " << r[4] << "\n";
     s << "EOD\n";
-    // Every sample near each zoomed corner; runs that leave the window are split by blank lines.
-    for (std::size_t z = 0; z < zooms.size(); ++z) {
-        const AxisVector& c = run.trajectory.corners[zooms[z].corner].point;
-        const double reach = 1.5 * zooms[z].half_width;
+    // The samples near each zoomed corner; runs that leave the window are split by blank lines.
+    for (std::size_t z = 0; z < plot.zooms.size(); ++z) {
         s << "$zoom" << z << " << EOD\n";
-        bool inside = false;
-        for (const AxisState& a : samples) {
-            const bool near = std::abs(a.position[0] - c[0]) <= reach && std::abs(a.position[1] - c[1]) <= reach;
-            if (near) s << a.position[0] << " " << a.position[1] << "\n";
-            else if (inside) s << "\n";
-            inside = near;
-        }
+        for (const Eigen::Vector2d& xy : plot.zooms[z].xy) row(s, xy);
         s << "EOD\n";
     }
 }
 
-std::string zoom_title(const PlanRun& run, std::size_t z, const Zoom& zoom) {
+std::string zoom_title(const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
     const CornerReport& c = run.trajectory.corners[zoom.corner];
     const auto& measured = run.corner_errors[zoom.corner];
     std::string title = cat("#", std::to_string(z + 1), " line ", std::to_string(c.line), ", ",
@@ -102,24 +60,28 @@ std::string zoom_title(const PlanRun& run, std::size_t z, const Zoom& zoom) {
 }
 
 // XY ranges around the program and the path, with a margin, never empty (a line along X, no moves).
-void overview_ranges(Script& s, const PlanRun& run) {
+void overview_ranges(Script& s, const PlanRun& run, const PlotSamples& plot) {
     Eigen::Vector2d low = run.points.front().head<2>(), high = low;
     const auto grow = [&](const AxisVector& p) {
         low = low.cwiseMin(p.head<2>());
         high = high.cwiseMax(p.head<2>());
     };
     for (const AxisVector& p : run.points) grow(p);
-    for (const AxisState& a : run.trajectory.samples) grow(a.position);
+    if (plot.any) {
+        low = low.cwiseMin(plot.low);
+        high = high.cwiseMax(plot.high);
+    }
     const double span = (high - low).maxCoeff();
     const double margin = span > 0.0 ? 0.08 * span : 1.0;
     s << "set xrange [" << low[0] - margin << ":" << high[0] + margin << "]\n"
       << "set yrange [" << low[1] - margin << ":" << high[1] + margin << "]\n";
 }
 
-void overview_plot(Script& s, const PlanRun& run, const std::vector<Zoom>& zooms) {
+void overview_plot(Script& s, const PlanRun& run, const PlotSamples& plot) {
+    const std::vector<ZoomSamples>& zooms = plot.zooms;
     s << "set origin 0,0.44\nset size ratio -1 0.5,0.51\n"
          "set title 'XY path' noenhanced\nset xlabel 'x [mm]'\nset ylabel 'y [mm]'\nset key below horizontal\n";
-    overview_ranges(s, run);
+    overview_ranges(s, run, plot);
     for (std::size_t z = 0; z < zooms.size(); ++z) {
         const AxisVector& c = run.trajectory.corners[zooms[z].corner].point;
         s << "set label " << (z + 1) << " '#" << (z + 1) << "' at " << c[0] << "," << c[1]
@@ -131,7 +93,7 @@ void overview_plot(Script& s, const PlanRun& run, const std::vector<Zoom>& zooms
          "unset label\n";
 }
 
-void zoom_plot(Script& s, const PlanRun& run, std::size_t z, const Zoom& zoom) {
+void zoom_plot(Script& s, const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
     const CornerReport& c = run.trajectory.corners[zoom.corner];
     const double h = zoom.half_width;
     const double x = 0.5 + 0.25 * static_cast<double>(z % 2);
@@ -152,12 +114,8 @@ void zoom_plot(Script& s, const PlanRun& run, std::size_t z, const Zoom& zoom) {
 // A fixed y range when every value is zero (gnuplot warns on an empty range).
 std::string flat_range(bool flat) { return flat ? "set yrange [-1:1]\n" : "set autoscale y\n"; }
 
-void time_plots(Script& s, const PlanRun& run) {
-    double feed = 0.0, acceleration = 0.0;
-    for (const AxisState& a : run.trajectory.samples) {
-        feed = std::max(feed, a.velocity.head<3>().norm());
-        acceleration = std::max(acceleration, a.acceleration.head<3>().cwiseAbs().maxCoeff());
-    }
+void time_plots(Script& s, const PlanRun& run, const PlotSamples& plot) {
+    const double feed = plot.max_feed, acceleration = plot.max_acceleration;
     s << "set size noratio 1,0.22\nset key inside top right\nset xlabel 't [s]'\nset grid\n"
       << "set xrange [0:" << std::max(run.trajectory.cycle_time, 1e-3) << "]\n";
     s << "set origin 0,0.22\nset title 'feed (path speed)'\nset ylabel 'mm/s'\n" << flat_range(feed == 0.0)
@@ -171,25 +129,26 @@ void time_plots(Script& s, const PlanRun& run) {
 
 }  // namespace
 
-std::string plot_script(const PlanRun& run, const std::string& program_name, const std::filesystem::path& png) {
-    const std::vector<Zoom> zooms = pick_zooms(run);
+std::string plot_script(const PlanRun& run, const PlotSamples& plot, const std::string& program_name,
+                        const std::filesystem::path& png) {
+    const std::vector<ZoomSamples>& zooms = plot.zooms;
     Script s;
     s << "set terminal pngcairo size 1200,1400 font 'Sans,10'\n"
       << "set output " << gnuplot_quote(png.string()) << "\n";
-    data_blocks(s, run, zooms);
+    data_blocks(s, run, plot);
     const std::string title = cat(program_name, ": cycle time ", fixed_text(run.trajectory.cycle_time, 4),
                                   " s, max corner error ", fixed_text(run.measured.max_corner_error, 4), " mm");
     s << "set multiplot title " << gnuplot_quote(title) << " noenhanced font 'Sans,14'\n";
-    overview_plot(s, run, zooms);
+    overview_plot(s, run, plot);
     for (std::size_t z = 0; z < zooms.size(); ++z) zoom_plot(s, run, z, zooms[z]);
-    time_plots(s, run);
+    time_plots(s, run, plot);
     s << "unset multiplot\nset output\n";
     return s.text;
 }
 
-void write_plot(const PlanRun& run, const std::string& program_name, const std::filesystem::path& gnuplot,
-                const std::filesystem::path& png) {
-    run_gnuplot(gnuplot, plot_script(run, program_name, png));
+void write_plot(const PlanRun& run, const PlotSamples& plot, const std::string& program_name,
+                const std::filesystem::path& gnuplot, const std::filesystem::path& png) {
+    run_gnuplot(gnuplot, plot_script(run, plot, program_name, png));
 }
 
 }  // namespace firtp::cli

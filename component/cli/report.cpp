@@ -4,6 +4,7 @@
 #include "number_text.hpp"
 #include "output_files.hpp"
 #include "plan_text.hpp"
+#include "plan_sink.hpp"
 #include "plot.hpp"
 #include "vibration_plot.hpp"
 #include "vibration_study.hpp"
@@ -185,7 +186,7 @@ std::vector<std::filesystem::path> write_report(const PlanRun& run, const PlanOp
     std::vector<std::filesystem::path> written{dir / "report.md", dir / "path.png", dir / "kinematics.png",
                                                dir / "spectrum.png"};
     if (study) written.push_back(dir / "response.png");
-    write_plot(run, name, gnuplot, outputs.create(written[1]));
+    write_plot(run, plot_samples_of(run), name, gnuplot, outputs.create(written[1]));
     run_gnuplot(gnuplot, kinematics_script(run, axes, outputs.create(written[2])));
     const SpectrumPlot spectrum = study ? study_spectrum(*study) : plan_spectrum(run, axes);
     run_gnuplot(gnuplot, spectrum_plot_script(spectrum, outputs.create(written[3])));

@@ -6,6 +6,8 @@
 #include "plan_checks.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
+#include "plan_sink.hpp"
+#include "progress_line.hpp"
 #include "record_config.hpp"
 #include <firtp/recorded_states.hpp>
 #include <firtp/servo_chain.hpp>
@@ -49,30 +51,39 @@ int run_command(std::span<const std::string> args) {
     // bridge publishes axis state and status for the host's next round.
     const std::size_t limit = 4 * planned.size() + 100000;
     host::Result result = host::Result::running;
+    ProgressLine progress("run", run.program.blocks.size());
     for (std::size_t k = 0; k < limit && result == host::Result::running; ++k) {
         result = host.step();
         while (lcm->handleTimeout(0) > 0) {
         }
         chain.step();
         chain.poll();
+        progress.update(static_cast<std::size_t>(host.statistics().blocks_published), static_cast<double>(k) * run.parameters.period);
     }
+    progress.clear();
     if (result != host::Result::done)
         throw std::runtime_error(cat("run: the program did not complete (", host::to_string(result), "): ",
                                      host.error()));
 
-    run.trajectory.samples = firtp::samples_from_axis_states(host.axis_states(), run.parameters.period);
-    measure_plan(run);
+    // The received samples go through what `plan` does with its own: CSV, measurement, plot.
+    const std::vector<AxisState> received = firtp::samples_from_axis_states(host.axis_states(), run.parameters.period);
+    run.trajectory.samples.clear();
+    PlanOutputs outputs(options.plan);
+    PlanSink sink(run, outputs.csv(), nullptr, false);
+    for (const AxisState& s : received) sink.sample(s);
+    run.sample_count = received.size();
+    sink.finish();
     double difference = 0.0;
-    const std::size_t common = std::min(planned.size(), run.trajectory.samples.size());
+    const std::size_t common = std::min(planned.size(), received.size());
     for (std::size_t k = 0; k < common; ++k)
-        difference = std::max(difference, (planned[k].position - run.trajectory.samples[k].position).norm());
+        difference = std::max(difference, (planned[k].position - received[k].position).norm());
 
-    const std::vector<std::filesystem::path> written = write_outputs(run, options.plan, gnuplot);
+    const std::vector<std::filesystem::path> written = outputs.finish(run, sink.plot(), gnuplot);
     print_summary(std::cout, run, options.plan.program.filename().string(), written);
     const host::Statistics stats = host.statistics();
     std::cout << "chain        " << run.program.blocks.size() << " blocks over LCM (" << stats.blocks_published
               << " published, " << stats.go_backs << " resends), " << stats.axis_states
-              << " axis states back; samples " << run.trajectory.samples.size() << " vs planned " << planned.size()
+              << " axis states back; samples " << received.size() << " vs planned " << planned.size()
               << ", largest difference from the plan " << number_text(difference) << " mm\n";
     std::cout.flush();
     return report_violations(std::cerr, run);

@@ -248,3 +248,34 @@ TEST(PlanOutputs, ReplacesAnExistingFileAndLeavesNoTemporaries) {
 
 }  // namespace
 }  // namespace firtp::cli_test
+
+namespace firtp::cli_test {
+namespace {
+
+// The JSON is written a corner at a time; it must read back as the very text one JSON document's
+// dump(2) gives (what firtp wrote before it streamed): with corners, with the paper's Tk fields,
+// and with none.
+TEST(PlanOutputs, StreamedJsonIsTheDocumentsOwnDump) {
+    for (const std::vector<std::string>& program :
+         {std::vector<std::string>{example("steps.ngc").string()},
+          std::vector<std::string>{example("diamond.ngc").string(), "--t1", "0.148", "--t2", "0.089"}}) {
+        TempDir dir;
+        std::vector<std::string> args{"plan"};
+        args.insert(args.end(), program.begin(), program.end());
+        args.insert(args.end(), {"--json", (dir / "out.json").string()});
+        ASSERT_EQ(run_firtp(args).exit_code, 0);
+        const std::string text = read_file(dir / "out.json");
+        const json report = json::parse(text);
+        EXPECT_GT(report["corners"].size(), 2u);
+        EXPECT_EQ(text, report.dump(2) + "\n") << program[0];
+    }
+    TempDir dir;
+    write_file(dir / "line.ngc", "G1 X10 F600\nM2\n");
+    ASSERT_EQ(run_firtp({"plan", (dir / "line.ngc").string(), "--json", (dir / "out.json").string()}).exit_code, 0);
+    const std::string text = read_file(dir / "out.json");
+    EXPECT_EQ(json::parse(text)["corners"], json::array());
+    EXPECT_EQ(text, json::parse(text).dump(2) + "\n");
+}
+
+}  // namespace
+}  // namespace firtp::cli_test

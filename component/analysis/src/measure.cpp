@@ -1,4 +1,6 @@
-// Measures a sampled trajectory against the programmed polyline (see measure.hpp).
+// Measures a sampled trajectory against the programmed polyline (see measure.hpp), one sample at a
+// time: a sample is tracked to a segment once the next one shows its direction of motion, and the
+// chord between two tracked samples goes to the corners it can be nearest to.
 #include <firtp/measure.hpp>
 
 #include <algorithm>
@@ -9,12 +11,8 @@
 namespace firtp {
 namespace {
 
-struct Segment {
-    AxisVector start;
-    AxisVector delta;  // end - start
-    AxisVector unit;   // delta / |delta|
-    double length2 = 0.0;
-};
+using Segment = MeasureStream::Segment;
+constexpr double inf = std::numeric_limits<double>::infinity();
 
 double distance(const AxisVector& p, const Segment& s) {
     const AxisVector from_start = p - s.start;
@@ -30,163 +28,198 @@ Segment chord(const AxisVector& a, const AxisVector& b) {
     return s;
 }
 
-// Zero-length blocks (as the planner skips them) repeat a point; drop the repeats.
-std::vector<AxisVector> distinct_points(std::span<const AxisVector> points) {
-    std::vector<AxisVector> out;
-    for (const AxisVector& p : points)
-        if (out.empty() || (p - out.back()).norm() >= min_block_length) out.push_back(p);
-    return out;
-}
-
-std::vector<Segment> segments_of(const std::vector<AxisVector>& points) {
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-        Segment s;
-        s.start = points[k];
-        s.delta = points[k + 1] - points[k];
-        s.length2 = s.delta.squaredNorm();
-        s.unit = s.length2 > 0.0 ? AxisVector(s.delta / std::sqrt(s.length2)) : AxisVector::Zero();
-        out.push_back(s);
-    }
-    return out;
-}
-
 // Distances closer than this count as equal (rounding on overlapping segments).
-double tie_tolerance(const std::vector<AxisVector>& points) {
+double tie_tolerance(std::span<const AxisVector> points) {
     double scale = 1.0;
     for (const AxisVector& p : points) scale = std::max(scale, p.cwiseAbs().maxCoeff());
     return 1e-10 * scale;
 }
 
-struct Tracking {
-    std::vector<std::size_t> segment;  // per sample, never decreasing
-    double max_distance = 0.0;         // largest distance of a sample from the polyline
-};
+}  // namespace
 
-// Forward tracking step for sample p moving along `motion`, last tracked to segment k:
+MeasureStream::MeasureStream(std::span<const AxisVector> points, double period, CornerCallback on_corner)
+    : period_(period), on_corner_(std::move(on_corner)) {
+    // Zero-length blocks (as the planner skips them) repeat a point; drop the repeats (a copy only
+    // where there are any: a long program's points are not held twice).
+    const auto distinct = [](const AxisVector& a, const AxisVector& b) { return (b - a).norm() >= min_block_length; };
+    bool repeats = false;
+    for (std::size_t i = 1; i < points.size() && !repeats; ++i) repeats = !distinct(points[i - 1], points[i]);
+    if (repeats) {
+        for (const AxisVector& p : points)
+            if (own_.empty() || distinct(own_.back(), p)) own_.push_back(p);
+        points_ = own_;
+    } else {
+        points_ = points;
+    }
+    if (points_.size() >= 2) last_ = points_.size() - 2;
+    tie_ = tie_tolerance(points_);
+}
+
+// Segments are made as the tracking reaches them and dropped behind it (it never goes back).
+const Segment& MeasureStream::segment(std::size_t k) {
+    while (window_base_ + window_.size() <= k) {
+        const std::size_t j = window_base_ + window_.size();
+        Segment s;
+        s.start = points_[j];
+        s.delta = points_[j + 1] - points_[j];
+        s.length2 = s.delta.squaredNorm();
+        s.unit = s.length2 > 0.0 ? AxisVector(s.delta / std::sqrt(s.length2)) : AxisVector::Zero();
+        window_.push_back(s);
+    }
+    return window_[k - window_base_];
+}
+
+void MeasureStream::derivatives(std::size_t n) {
+    const auto p = [&](std::size_t i) -> const AxisVector& { return recent(i); };
+    if (n >= 1) {
+        const AxisVector step = p(n) - p(n - 1);
+        m_.max_velocity = m_.max_velocity.cwiseMax(step.cwiseAbs());
+        m_.max_path_speed = std::max(m_.max_path_speed, step.norm());
+    }
+    if (n >= 2) {
+        const std::size_t i = n - 1;
+        m_.max_acceleration = m_.max_acceleration.cwiseMax((p(i + 1) - 2.0 * p(i) + p(i - 1)).cwiseAbs());
+    }
+    if (n >= 3) {
+        const std::size_t i = n - 2;
+        m_.max_jerk = m_.max_jerk.cwiseMax((p(i + 2) - 3.0 * p(i + 1) + 3.0 * p(i) - p(i - 1)).cwiseAbs());
+    }
+}
+
+// Forward tracking step for sample i moving along `motion`, last tracked to segment k_:
 // moves on when one of the next two segments is closer (two, so that cutting across a short
 // detour cannot stall the tracking), or when the next one is as close (a corner point, or the
 // overlapping segments of a reversal) and fits the direction of motion better.
-// `stray`: how far samples have strayed from the path so far; the tool may cut across a detour
+// stray_: how far samples have strayed from the path so far; the tool may cut across a detour
 // of that order (a narrow U of micrometre blocks within its tolerance), so the search for a
-// closer segment reaches over a few times that much path as well.
-std::size_t advance(const std::vector<Segment>& segments, const AxisVector& p, const AxisVector& motion,
-                    std::size_t k, double tie, double stray) {
-    const std::size_t last = segments.size() - 1;
-    double d = distance(p, segments[k]);
-    const double step = motion.norm() + tie;  // how far the tool can have gone since the last sample
-    const double reach = step + 4.0 * stray;
-    while (k < last) {
-        const double next = distance(p, segments[k + 1]);
+// closer segment reaches over a few times that much path as well. The segment is never earlier
+// than the last one, so that a reversal or a revisited point is not mistaken for an earlier part
+// of the path; distances are taken over segments k-1 .. k+2.
+void MeasureStream::track(std::size_t i, const AxisVector& motion) {
+    const AxisVector& p = recent(i);
+    std::size_t& tracked = tracked_[i % 2];
+    tracked = k_;
+    if (!p.allFinite()) return;  // reported by Measured::finite
+    std::size_t k = k_;
+    double d = distance(p, segment(k));
+    const double step = motion.norm() + tie_;  // how far the tool can have gone since the last sample
+    const double reach = step + 4.0 * stray_;
+    while (k < last_) {
+        const double next = distance(p, segment(k + 1));
         // Further segments, as long as the ones skipped are short enough to pass within a step.
         std::size_t jump = 0;
-        double after = std::numeric_limits<double>::infinity(), skipped = 0.0;
-        for (std::size_t j = k + 2; j <= last && skipped <= reach; ++j) {
-            skipped += std::sqrt(segments[j - 1].length2);
-            if (const double dj = distance(p, segments[j]); dj < after) after = dj, jump = j;
+        double after = inf, skipped = 0.0;
+        for (std::size_t j = k + 2; j <= last_ && skipped <= reach; ++j) {
+            skipped += std::sqrt(segment(j - 1).length2);
+            if (const double dj = distance(p, segment(j)); dj < after) after = dj, jump = j;
         }
-        if (jump != 0 && after < std::min(d, next) - tie) {
+        if (jump != 0 && after < std::min(d, next) - tie_) {
             k = jump;
             d = after;
             continue;
         }
-        const bool closer = next < d - tie;
-        const bool tied = next <= d + tie && motion.dot(segments[k + 1].unit) > motion.dot(segments[k].unit);
+        const bool closer = next < d - tie_;
+        const bool tied = next <= d + tie_ && motion.dot(segment(k + 1).unit) > motion.dot(segment(k).unit);
         if (!closer && !tied) break;
         ++k;
         d = next;
     }
-    return k;
+    k_ = tracked = k;
+    double nearest = inf;
+    for (std::size_t s = k > 0 ? k - 1 : 0; s <= std::min(k + 2, last_); ++s) nearest = std::min(nearest, distance(p, segment(s)));
+    stray_ = std::max(stray_, nearest);
+    for (; window_base_ + 1 < k && !window_.empty(); ++window_base_) window_.pop_front();
 }
 
-// Assigns every sample a segment, never going back, so that a reversal or a revisited point is
-// not mistaken for an earlier part of the path; distances are taken over segments k-1 .. k+2.
-Tracking track(std::span<const AxisState> samples, const std::vector<Segment>& segments, double tie) {
-    Tracking out;
-    out.segment.reserve(samples.size());
-    const std::size_t n = samples.size();
-    const std::size_t last = segments.size() - 1;
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const AxisVector& p = samples[i].position;
-        out.segment.push_back(k);
-        if (!p.allFinite()) continue;  // reported by Measured::finite
-        const AxisVector motion = samples[std::min(i + 1, n - 1)].position - samples[i > 0 ? i - 1 : 0].position;
-        k = advance(segments, p, motion, k, tie, out.max_distance);
-        out.segment.back() = k;
-        double d = std::numeric_limits<double>::infinity();
-        for (std::size_t s = k > 0 ? k - 1 : 0; s <= std::min(k + 2, last); ++s) d = std::min(d, distance(p, segments[s]));
-        out.max_distance = std::max(out.max_distance, d);
+// Distance of interior point j from the chord between samples c and c+1 (the drives go straight
+// from sample to sample).
+double MeasureStream::chord_distance(std::size_t c, std::size_t j) const {
+    return distance(points_[j], firtp::chord(recent(c), recent(c + 1)));
+}
+
+void MeasureStream::close_corner(std::size_t j, double error) {
+    m_.corner_errors.push_back(error);  // corner j is entry j - 1: corners close in order
+    if (on_corner_) on_corner_(j - 1, error);
+}
+
+void MeasureStream::close_open_below(std::size_t j) {
+    for (; !open_.empty() && open_.front().first < j; open_.pop_front()) close_corner(open_.front().first, open_.front().second);
+}
+
+// Chord c between samples c and c+1, tracked to segments s0 <= s1. A corner j takes every chord
+// touching a sample tracked to segment j-1 or j (s0 <= j <= s1 + 1), the ones entering and leaving
+// included. A corner the tracking jumped past (s0 < j-1, j < s1) takes the chords either side of
+// the jump; one before the first sample's segment, the first chord. has_next: chord c+1 exists.
+void MeasureStream::chord(std::size_t c, bool has_next) {
+    const std::size_t s0 = tracked_[c % 2], s1 = tracked_[(c + 1) % 2];
+    if (c == 0)
+        for (std::size_t j = 1; j < s0 && j <= last_; ++j) close_corner(j, std::min(inf, chord_distance(0, j)));
+    for (std::size_t j = std::max<std::size_t>(s0, 1); j <= std::min(s1 + 1, last_); ++j) {
+        if (j >= s0 + 2 && j < s1) continue;  // jumped past: below
+        const double d = std::min(inf, chord_distance(c, j));  // NaN (a sample that is not finite) counts as none
+        auto open = std::find_if(open_.begin(), open_.end(), [&](const auto& o) { return o.first == j; });
+        if (open == open_.end()) open_.emplace_back(j, d);
+        else open->second = std::min(open->second, d);
     }
-    return out;
-}
-
-// Closest approach to point j of the chords between samples tracked to segments first..last.
-double closest_approach(std::span<const AxisState> samples, const AxisVector& point,
-                        const std::vector<std::size_t>& segment, std::size_t first, std::size_t last) {
-    auto lo = static_cast<std::size_t>(std::lower_bound(segment.begin(), segment.end(), first) - segment.begin());
-    auto hi = static_cast<std::size_t>(std::upper_bound(segment.begin(), segment.end(), last) - segment.begin());
-    if (lo == hi) {  // the tracking jumped past: use the samples either side of the jump
-        lo = lo > 0 ? lo - 1 : 0;
-        hi = std::min(hi + 1, samples.size());
+    // Later chords start at s1: every corner below it is final.
+    close_open_below(std::min(s0 + 2, s1));
+    for (std::size_t j = s0 + 2; j < s1 && j <= last_; ++j) {
+        double best = inf;
+        if (c > 0) best = std::min(best, chord_distance(c - 1, j));
+        best = std::min(best, chord_distance(c, j));
+        if (has_next) best = std::min(best, chord_distance(c + 1, j));
+        else best = std::min(best, (recent(c + 1) - points_[j]).norm());
+        close_corner(j, best);
     }
-    // The drives go straight from sample to sample: measure the chords, including the ones
-    // entering and leaving the tracked range.
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = lo > 0 ? lo - 1 : 0; i < hi && i + 1 < samples.size(); ++i)
-        best = std::min(best, distance(point, chord(samples[i].position, samples[i + 1].position)));
-    if (samples.size() == 1 || hi == samples.size()) best = std::min(best, (samples.back().position - point).norm());
-    return best;
+    close_open_below(s1);
 }
 
-// Closest approach to each interior point j over the samples tracked to segment j-1 or j.
-std::vector<double> corner_errors(std::span<const AxisState> samples, const std::vector<AxisVector>& points,
-                                  const std::vector<std::size_t>& segment) {
-    std::vector<double> out;
-    for (std::size_t j = 1; j + 1 < points.size(); ++j) out.push_back(closest_approach(samples, points[j], segment, j - 1, j));
-    return out;
+void MeasureStream::add(const AxisState& sample) {
+    const std::size_t n = n_++;
+    recent_[n % recent_.size()] = sample.position;
+    m_.finite = m_.finite && sample.position.allFinite();
+    m_.cycle_time = sample.time;
+    m_.end_position = sample.position;
+    if (period_ > 0.0) derivatives(n);
+    if (points_.size() == 1) lone_point_ = std::max(lone_point_, (sample.position - points_[0]).norm());
+    if (points_.size() < 2 || n == 0) return;
+    const std::size_t i = n - 1;  // its direction of motion is known now
+    track(i, recent(n) - recent(i > 0 ? i - 1 : 0));
+    if (i >= 1) chord(i - 1, true);
 }
 
-void measure_derivatives(std::span<const AxisState> samples, double period, Measured& m) {
-    const std::size_t n = samples.size();
-    auto p = [&](std::size_t i) -> const AxisVector& { return samples[i].position; };
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-        const AxisVector step = p(i + 1) - p(i);
-        m.max_velocity = m.max_velocity.cwiseMax(step.cwiseAbs());
-        m.max_path_speed = std::max(m.max_path_speed, step.norm());
+Measured MeasureStream::finish() {
+    const std::size_t n = n_;
+    if (n < 2) {  // no differences, nothing to track
+        m_.max_velocity.setZero();
+        m_.max_path_speed = 0.0;
+        return std::move(m_);
     }
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        m.max_acceleration = m.max_acceleration.cwiseMax((p(i + 1) - 2.0 * p(i) + p(i - 1)).cwiseAbs());
-    for (std::size_t i = 1; i + 2 < n; ++i)
-        m.max_jerk = m.max_jerk.cwiseMax((p(i + 2) - 3.0 * p(i + 1) + 3.0 * p(i) - p(i - 1)).cwiseAbs());
-    m.max_velocity /= period;
-    m.max_path_speed /= period;
-    m.max_acceleration /= period * period;
-    m.max_jerk /= period * period * period;
-}
+    if (period_ > 0.0) {
+        m_.max_velocity /= period_;
+        m_.max_path_speed /= period_;
+        m_.max_acceleration /= period_ * period_;
+        m_.max_jerk /= period_ * period_ * period_;
+    }
+    if (points_.size() == 1) m_.max_contour_error = lone_point_;  // a program that never moves
+    if (points_.size() < 2) return std::move(m_);
 
-}  // namespace
+    track(n - 1, recent(n - 1) - recent(n - 2));
+    chord(n - 2, false);
+    const AxisVector& end = recent(n - 1);
+    for (auto& [j, best] : open_) best = std::min(best, (end - points_[j]).norm());
+    close_open_below(last_ + 1);
+    for (std::size_t j = tracked_[(n - 1) % 2] + 2; j <= last_; ++j)  // never reached: the last chord and the end
+        close_corner(j, std::min(std::min(inf, chord_distance(n - 2, j)), (end - points_[j]).norm()));
+    m_.max_contour_error = stray_;
+    for (double e : m_.corner_errors) m_.max_corner_error = std::max(m_.max_corner_error, e);
+    return std::move(m_);
+}
 
 Measured measure(std::span<const AxisState> samples, std::span<const AxisVector> points, double period) {
-    Measured m;
-    for (const AxisState& s : samples) m.finite = m.finite && s.position.allFinite();
-    if (samples.empty()) return m;
-    m.cycle_time = samples.back().time;
-    m.end_position = samples.back().position;
-    if (samples.size() < 2) return m;
-
-    if (period > 0.0) measure_derivatives(samples, period, m);
-
-    const std::vector<AxisVector> distinct = distinct_points(points);
-    if (distinct.size() == 1)  // a program that never moves: the polyline is one point
-        for (const AxisState& s : samples) m.max_contour_error = std::max(m.max_contour_error, (s.position - distinct[0]).norm());
-    if (distinct.size() < 2) return m;
-
-    const Tracking tracking = track(samples, segments_of(distinct), tie_tolerance(distinct));
-    m.max_contour_error = tracking.max_distance;
-    m.corner_errors = corner_errors(samples, distinct, tracking.segment);
-    for (double e : m.corner_errors) m.max_corner_error = std::max(m.max_corner_error, e);
-    return m;
+    MeasureStream stream(points, period);
+    for (const AxisState& s : samples) stream.add(s);
+    return stream.finish();
 }
 
 }  // namespace firtp

@@ -7,11 +7,10 @@
 
 namespace firtp {
 
-Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
-                           std::span<const Block> blocks) {
+StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
+                                   std::span<const Block> blocks, TrajectorySink& sink) {
     Planner planner(parameters, start);
-    Trajectory trajectory;
-    trajectory.start = start;
+    StreamedTrajectory out;
     std::size_t next = 0;
     for (;;) {
         for (; next < blocks.size(); ++next) {
@@ -23,12 +22,30 @@ Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector
         if (next == blocks.size()) planner.finish();
         AxisState state;
         planner.tick(state);
-        trajectory.samples.push_back(state);
-        for (CornerReport r; planner.take_report(r);) trajectory.corners.push_back(r);
+        ++out.samples;
+        out.cycle_time = state.time;
+        sink.sample(state);
+        for (CornerReport r; planner.take_report(r);) sink.corner(r);
         if (next == blocks.size() && planner.idle()) break;
     }
-    trajectory.cycle_time = trajectory.samples.back().time;
-    trajectory.stats = planner.stats();
+    out.stats = planner.stats();
+    return out;
+}
+
+Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
+                           std::span<const Block> blocks) {
+    struct Keep : TrajectorySink {
+        Trajectory& t;
+        explicit Keep(Trajectory& into) : t(into) {}
+        void sample(const AxisState& state) override { t.samples.push_back(state); }
+        void corner(const CornerReport& report) override { t.corners.push_back(report); }
+    };
+    Trajectory trajectory;
+    trajectory.start = start;
+    Keep keep(trajectory);
+    const StreamedTrajectory streamed = plan_trajectory(parameters, start, blocks, keep);
+    trajectory.cycle_time = streamed.cycle_time;
+    trajectory.stats = streamed.stats;
     return trajectory;
 }
 

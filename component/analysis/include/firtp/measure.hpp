@@ -4,7 +4,12 @@
 
 #include <firtp/types.hpp>
 
+#include <array>
+#include <cstddef>
+#include <deque>
+#include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace firtp {
@@ -26,5 +31,55 @@ struct Measured {
 // points: the start point followed by the end point of every block (zero-length blocks may repeat
 // a point; they are ignored). Samples must be equally spaced by `period`.
 Measured measure(std::span<const AxisState> samples, std::span<const AxisVector> points, double period);
+
+// The same measurement, one sample at a time, with state bounded by the path the tool strays
+// over (not by the number of samples): add() every sample in order, then finish(). The result is
+// bit for bit measure()'s. `points` must outlive the stream. `on_corner(index, error)` is told each corner error (index into
+// Measured::corner_errors) as soon as no later sample can change it.
+class MeasureStream {
+public:
+    using CornerCallback = std::function<void(std::size_t, double)>;
+
+    MeasureStream(std::span<const AxisVector> points, double period, CornerCallback on_corner = {});
+    void add(const AxisState& sample);
+    Measured finish();
+
+    // The segment of the program the newest tracked sample is on (blocks done, for progress).
+    std::size_t segment() const { return k_; }
+
+    struct Segment {
+        AxisVector start;
+        AxisVector delta;  // end - start
+        AxisVector unit;   // delta / |delta|
+        double length2 = 0.0;
+    };
+
+private:
+    const AxisVector& recent(std::size_t i) const { return recent_[i % recent_.size()]; }
+    const Segment& segment(std::size_t k);
+    void derivatives(std::size_t n);
+    void track(std::size_t i, const AxisVector& motion);
+    double chord_distance(std::size_t c, std::size_t j) const;
+    void chord(std::size_t c, bool has_next);
+    void close_corner(std::size_t j, double error);
+    void close_open_below(std::size_t j);
+
+    std::vector<AxisVector> own_;       // the distinct points, where `points` repeats one
+    std::span<const AxisVector> points_;  // distinct programmed points (the caller's when it has no repeats)
+    std::size_t last_ = 0;            // index of the last segment
+    double period_;
+    double tie_ = 0.0;
+    CornerCallback on_corner_;
+    Measured m_;
+    std::size_t n_ = 0;                      // samples so far
+    std::array<AxisVector, 4> recent_{};     // the last four positions, by sample index mod 4
+    std::array<std::size_t, 2> tracked_{};   // segment of samples i-1 and i (by index mod 2)
+    std::size_t k_ = 0;                      // tracking: segment of the newest tracked sample
+    double stray_ = 0.0;                     // largest distance of a tracked sample from the path
+    double lone_point_ = 0.0;                // a program that never moves: distance from its point
+    std::deque<Segment> window_;             // segments from window_base_ on
+    std::size_t window_base_ = 0;
+    std::deque<std::pair<std::size_t, double>> open_;  // corners still taking chords, ascending
+};
 
 }  // namespace firtp

@@ -5,6 +5,7 @@
 #include <firtp/report.hpp>
 #include <firtp/types.hpp>
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -18,8 +19,28 @@ struct Trajectory {
     PlannerStats stats;                // the planner's counts: blocks slowed, crawling
 };
 
-// Runs the planner as the servo thread would, blocks arriving as fast as it takes them; throws
-// std::invalid_argument naming the block's line when a block is invalid.
+// Receives the samples and corner reports in the order the planner produces them.
+class TrajectorySink {
+public:
+    virtual ~TrajectorySink() = default;
+    virtual void sample(const AxisState& state) = 0;
+    virtual void corner(const CornerReport& report) = 0;
+};
+
+// What is left of a streamed plan once the samples went to the sink.
+struct StreamedTrajectory {
+    std::size_t samples = 0;
+    double cycle_time = 0.0;  // time of the last sample
+    PlannerStats stats;
+};
+
+// Runs the planner as the servo thread would, blocks arriving as fast as it takes them, and hands
+// every sample and corner to `sink` as it is made (memory: the planner's queue, not the program's
+// duration). Throws std::invalid_argument naming the block's line when a block is invalid.
+StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
+                                   std::span<const Block> blocks, TrajectorySink& sink);
+
+// The same, keeping every sample.
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                            std::span<const Block> blocks);
 
