@@ -2,6 +2,7 @@
 
 #include "chain_options.hpp"
 #include "cli_errors.hpp"
+#include "log_arguments.hpp"
 #include "plan_run.hpp"
 #include "record_config.hpp"
 #include "record_receiver.hpp"
@@ -53,22 +54,10 @@ po::options_description record_flags() {
 }
 
 RecordOptions parse_record_options(std::span<const std::string> args) {
-    po::options_description all = record_flags();
-    all.add_options()("log", po::value<std::string>());
-    po::positional_options_description positional;
-    positional.add("log", 1);
-    po::variables_map vm;
-    try {
-        po::store(po::command_line_parser(std::vector<std::string>(args.begin(), args.end()))
-                      .options(all).positional(positional).run(), vm);
-        po::notify(vm);
-    } catch (const po::error& e) {
-        throw UsageError(std::string(e.what()) + " (see firtp record --help)");
-    }
+    const po::variables_map vm = parse_log_arguments(record_flags(), args, "record");
     RecordOptions o;
     o.help = vm.count("help") > 0;
     if (o.help) return o;
-    if (!vm.count("log")) throw UsageError("record: missing LOG.lcmlog (see firtp record --help)");
     o.log = vm["log"].as<std::string>();
     if (vm.count("lcm-url")) o.url = vm["lcm-url"].as<std::string>();
     if (vm.count("channels")) o.channels = vm["channels"].as<std::string>();

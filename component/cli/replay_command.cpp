@@ -2,6 +2,7 @@
 
 #include "chain_options.hpp"
 #include "cli_errors.hpp"
+#include "log_arguments.hpp"
 #include "plan_run.hpp"
 #include "number_text.hpp"
 #include "record_config.hpp"
@@ -51,22 +52,10 @@ po::options_description replay_flags() {
 }
 
 ReplayOptions parse_replay_options(std::span<const std::string> args) {
-    po::options_description all = replay_flags();
-    all.add_options()("log", po::value<std::string>());
-    po::positional_options_description positional;
-    positional.add("log", 1);
-    po::variables_map vm;
-    try {
-        po::store(po::command_line_parser(std::vector<std::string>(args.begin(), args.end()))
-                      .options(all).positional(positional).run(), vm);
-        po::notify(vm);
-    } catch (const po::error& e) {
-        throw UsageError(std::string(e.what()) + " (see firtp replay --help)");
-    }
+    const po::variables_map vm = parse_log_arguments(replay_flags(), args, "replay");
     ReplayOptions o;
     o.help = vm.count("help") > 0;
     if (o.help) return o;
-    if (!vm.count("log")) throw UsageError("replay: missing LOG.lcmlog (see firtp replay --help)");
     o.log = vm["log"].as<std::string>();
     if (vm.count("tolerance") && !((o.tolerance = vm["tolerance"].as<double>()) >= 0.0))
         throw UsageError("--tolerance: must be 0 or a positive number");
