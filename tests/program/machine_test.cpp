@@ -68,6 +68,21 @@ TEST(Machine, DefaultMachine) {
     EXPECT_EQ(firtp::load_machine(IniFile::parse("[FIRTP]\nTOLERANCE = 0.1\n", "m.ini")).arc_chord_tolerance, 0.001);
 }
 
+// One jerk setting for firtp and firtp_tp: [TRAJ]MAX_LINEAR_JERK (LinuxCNC master's key) bounds every
+// linear axis, alone or below its own [AXIS_L]MAX_JERK; rotary axes keep theirs.
+TEST(Machine, MaxLinearJerkBoundsTheLinearAxes) {
+    const MachineConfig m = firtp::load_machine(IniFile::parse(
+        "[TRAJ]\nMAX_LINEAR_JERK = 20000\n[AXIS_X]\nMAX_JERK = 50000\n[AXIS_Y]\nMAX_JERK = 10000\n[AXIS_Z]\n"
+        "MAX_VELOCITY = 100\n[AXIS_A]\nMAX_VELOCITY = 3600\nMAX_ACCELERATION = 36000\nMAX_JERK = 1000000\n",
+        "m.ini"));
+    EXPECT_EQ(m.limits.axis[0].max_jerk, 20000.0);    // its own 50000 is above
+    EXPECT_EQ(m.limits.axis[1].max_jerk, 10000.0);    // its own is below
+    EXPECT_EQ(m.limits.axis[2].max_jerk, 20000.0);    // none of its own
+    EXPECT_EQ(m.limits.axis[3].max_jerk, 1000000.0);  // rotary: untouched
+    const MachineConfig zero = firtp::load_machine(IniFile::parse("[TRAJ]\nMAX_LINEAR_JERK = 0\n[AXIS_X]\nMAX_JERK = 50000\n", "m.ini"));
+    EXPECT_EQ(zero.limits.axis[0].max_jerk, 50000.0);  // 0: not set
+}
+
 // Without T1 or MODES the machine smooths at its limits; filter_times() (the fixed chain's, when
 // only some times are given) still derives the rest from the limits.
 TEST(Machine, DefaultMachineSmoothsAtItsLimits) {

@@ -74,6 +74,9 @@ void check_axis_keys(const IniFile& ini, const std::string& section) {
 
 void read_axes(const IniFile& ini, MachineConfig& m) {
     if (const auto v = positive(ini, "TRAJ", "MAX_LINEAR_VELOCITY")) m.limits.max_linear_velocity = *v;
+    double linear_jerk = 0.0;  // 0: not set
+    if (const auto v = positive(ini, "TRAJ", "MAX_LINEAR_JERK", true)) linear_jerk = *v;
+    bool own_jerk[max_axes] = {};  // [AXIS_L]MAX_JERK given
     for (int i = 0; i < max_axes; ++i) {
         const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(i)];
         if (ini.section(section).empty()) continue;
@@ -82,8 +85,17 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
         AxisLimits& axis = m.limits.axis[static_cast<std::size_t>(i)];
         if (const auto v = positive(ini, section, "MAX_VELOCITY")) axis.max_velocity = *v;
         if (const auto v = positive(ini, section, "MAX_ACCELERATION")) axis.max_acceleration = *v;
-        if (const auto v = positive(ini, section, "MAX_JERK", true)) axis.max_jerk = *v;  // 0 = not limited
+        if (const auto v = positive(ini, section, "MAX_JERK", true)) axis.max_jerk = *v, own_jerk[i] = true;  // 0 = not limited
     }
+    // LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK beside [AXIS_L]MAX_JERK; so do
+    // firtp and firtp_tp (tp_ini.cpp): every linear axis at most that (0: not set).
+    if (linear_jerk > 0.0)
+        for (int i = 0; i < m.limits.axes; ++i) {
+            const char letter = axis_letters[static_cast<std::size_t>(i)];
+            if (letter == 'A' || letter == 'B' || letter == 'C') continue;
+            double& jerk = m.limits.axis[static_cast<std::size_t>(i)].max_jerk;
+            jerk = own_jerk[i] && jerk > 0.0 ? std::min(jerk, linear_jerk) : linear_jerk;
+        }
 }
 
 // What LinuxCNC's interpreter reads beside the INI; LINEAR_UNITS as LinuxCNC spells mm.
