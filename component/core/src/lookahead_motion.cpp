@@ -16,7 +16,6 @@ constexpr int max_check_attempts = 12;
 constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
 constexpr double crawl_fraction = 1e-3;
 constexpr double error_margin = 1e-6;  // of epsilon: what the samples round to may differ a little
-constexpr std::size_t report_ring = 64;
 // check()'s *bad when the block under way cannot take the new plan (no corner to lower).
 constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
 
