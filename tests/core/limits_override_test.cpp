@@ -201,8 +201,11 @@ TEST(Hold, InsideABlockThatEndsInAStop) {
 // differences), every corner and the exact end hold on every program.
 TEST(RandomMachines, OverrideChangesKeepLimitsToleranceAndEnd) { check_rate_changes(31, 120, false, true); }
 
-// Known to fail (issue 13 stays open on it), measured on these 120 programs: 1 fails, a hold's
-// braking plan passes an acceleration limit by 4 % (program 98). (Two aborts that overran the
-// bound, once by minutes, were holds in a block ending in a stop: see Hold.InsideABlockThatEndsInAStop.)
-// Run with --gtest_also_run_disabled_tests while fixing them.
-TEST(RandomMachines, DISABLED_HoldResumeAndAbortKeepLimitsToleranceAndStopBound) { check_rate_changes(31, 120, true, true); }
+// Holds, resumes and aborts among the rate changes: limits (also in finite differences), corner
+// errors, the exact end and the stop bound on every program. A hold's braking or a resume that
+// fails its check keeps the accepted plan and is tried again at the next tick (it used to run an
+// unchecked plan whose legs no longer covered their blocks: position jumps of up to 15 mm at rest).
+// Measured with FIRTP_RANDOM_SEED=1..6 and FIRTP_RANDOM_SCALE=4 (2,880 programs): 6 still fail
+// their finite-difference jerk (issue 13 stays open on them).
+TEST(RandomMachines, HoldResumeAndAbortKeepLimitsToleranceAndStopBound) { check_rate_changes(31, 120, true, true); }
+TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 480, true, true); }

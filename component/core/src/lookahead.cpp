@@ -72,7 +72,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     : parameters_(parameters), limits_(parameters.limits), timeline_(&timeline),
       max_rate_(std::max(parameters.max_rate, 1.0)), capacity_(std::max<std::size_t>(parameters.queue_capacity, 2)),
       segments_(capacity_ + 1),  // one spare: a hold splits a block even when the window is full
-      goal_(start), sweep_(3 * segments_.size() + 64), saved_(segments_.size()) {
+      goal_(start), sweep_(3 * segments_.size() + 64), saved_(segments_.size()), snapshot_(segments_.size()) {
     rules_.limits = limits_;
     rules_.t2 = jerk_time(limits_);
     sparse_.t2 = rules_.t2;
@@ -158,6 +158,7 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
     if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
     const Segment& prev = seg(i - 1);
+    if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
     return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2};  // the corner, one speed both sides
 }
 
@@ -331,6 +332,8 @@ bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
     if (t1 > leg_s || t1 > leg_n) return false;
     // Kernels start in the steps' order: a step wider than the one entering the block waits.
     if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width(i, b))) return false;
+    // ... and not before now (a hold brakes in the block under way).
+    if (i == 0 && frozen_.moving && frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return false;
     if (s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) return true;
     const AxisVector m = unit(s.u + n.u);
     const double inward = (dv - m * dv.dot(m)).norm();
@@ -411,7 +414,11 @@ double Lookahead::entry_for(std::size_t i) const {
     auto ok = [&](double a) { return dense_ok(i - 1, b, a); };
     const double hi = std::min(s.brake ? 0.0 : target(i), s.entry_max), lo = std::min(b, s.entry_max);
     if (hi >= lo) return ok(lo) ? highest(ok, lo, hi) : lo;
-    return lowest(ok, hi, lo);
+    const double v = lowest(ok, hi, lo);
+    // A hold brakes as hard as the junction allows: where even its bound's speed does not pass,
+    // the stop falls in a later block (place_hold_stop goes on) rather than past a limit.
+    if (s.brake && !ok(v) && b > v && ok(b)) return lowest(ok, v, b);
+    return v;
 }
 
 void Lookahead::plan_segment(std::size_t i, double entry) {
@@ -537,7 +544,11 @@ void Lookahead::set_rate(double rate) {
     if (!hold) rate_ = rate;
     const bool resumed = held_ && !hold;
     held_ = hold;
-    if (resumed) unsplit();
+    retry_ = false;
+    if (resumed && count_ > 0) {
+        take_snapshot();
+        unsplit();
+    }
     if (count_ > 0) replan(0);
 }
 
@@ -613,6 +624,12 @@ void Lookahead::place_hold_stop() {
     }
 }
 
+void Lookahead::take_snapshot() {
+    snapshot_count_ = count_;
+    for (std::size_t i = 0; i < count_; ++i) snapshot_[i] = seg(i);
+    snapshot_taken_ = true;
+}
+
 void Lookahead::unsplit() {
     for (std::size_t i = 0; i < count_; ++i) {
         Segment& s = seg(i);
@@ -635,6 +652,7 @@ void Lookahead::unsplit() {
         if (i + 1 < count_) link(i);
         else classify(i);
         backward(count_ - 1);
+        plan_segment(i, i == 0 && frozen_.moving ? frozen_.speed : entry_for(i));  // its legs cover it whole
         return;
     }
 }

@@ -194,6 +194,14 @@ void Lookahead::freeze(const NextStep& n) {
 
 void Lookahead::commit() {
     const double period = parameters_.period;
+    if (retry_ && count_ > 0) {  // a hold's stop or a resume that failed its check: again from here
+        retry_ = false;
+        if (!held_) {
+            take_snapshot();
+            unsplit();
+        }
+        replan(0);
+    }
     for (;;) {
         if (count_ == 0) return;
         // The next step's kernel start is kept until the plan changes: most ticks end here.
@@ -209,7 +217,7 @@ void Lookahead::commit() {
             return;
         }
         if (next_is_start_) {
-            if (held_) return;
+            if (held_ || retry_) return;  // (a resume not yet checked: the plan after the stop is not)
             if (waiting_since_ < 0) waiting_since_ = timeline_->now();
             const bool stalled = static_cast<double>(timeline_->now() - waiting_since_) * period >= parameters_.start_wait;
             if (!final_for_start() && !stalled) return;
@@ -289,15 +297,25 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         const Segment& s = seg(from);
         span += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
     }
+    // Held: what follows the hold's stop starts only after a resume, which plans and checks it
+    // again; the check ends at the stop.
+    std::size_t last = count_;
+    if (held_)
+        for (std::size_t i = 0; i < count_; ++i)
+            if (seg(i).hold_split || seg(i).hold_end || (exit_is_stop(i) && seg(i).brake)) {
+                last = i + 1;
+                break;
+            }
+    if (first >= last) return true;
     // A block its legs do not cover: lower the corner it is entered from.
-    for (std::size_t i = first; i < count_; ++i) {
+    for (std::size_t i = first; i < last; ++i) {
         if (!seg(i).unfit) continue;
         if (i > 0 && seg(i - 1).kind != Kind::stop) {
             excess_ = 0.0;
             *bad = i - 1;
             return false;
         }
-        if (i == 0 && frozen_.moving && !held_) {  // a new feed the motion under way cannot take
+        if (i == 0 && frozen_.moving) {  // a new feed (or a hold's braking) the motion under way cannot take
             *bad = front_unfit;
             return false;
         }
@@ -306,7 +324,9 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     build_legs(from);
     double end = enter_[first];
     double width = 0.0;  // the widest kernel of these legs: the reach of a change among them
-    for (const TimedLeg& leg : legs_) {
+    const std::size_t legs = last < count_ ? leg_of_[last - 1] + 1 : legs_.size();
+    for (std::size_t k = 0; k < legs; ++k) {
+        const TimedLeg& leg = legs_[k];
         end = std::max(end, leg.finish());
         width = std::max({width, leg.rising.width(), leg.falling.width()});
     }
@@ -316,13 +336,13 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
-    for (std::size_t k = 0; k < legs_.size() && limits.ok; ++k)
+    for (std::size_t k = 0; k < legs && limits.ok; ++k)
         if (legs_[k].fall < -1e-12) limits = {false, legs_[k].fall_centre, 0, 0, 0.0};
     excess_ = 0.0;
     if (!limits.ok) {  // lower the corner nearest to where it happened
         std::size_t nearest = count_;
         double distance = infinity;
-        for (std::size_t i = from; i + 1 < count_; ++i) {
+        for (std::size_t i = from; i + 1 < last; ++i) {
             if (seg(i).kind == Kind::stop) continue;
             const double d = std::abs(when_[i] - limits.time);
             if (d < distance) distance = d, nearest = i;
@@ -331,7 +351,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         return false;
     }
     // Every corner the changed motion can reach: within the widest kernel of its first change.
-    for (std::size_t i = from; i + 1 < count_; ++i) {
+    for (std::size_t i = from; i + 1 < last; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
         if (when_[i] < enter_[first] - width - 4.0 * parameters_.period) continue;
@@ -352,10 +372,14 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
 
 void Lookahead::replan(std::size_t first) {
     next_known_ = false;
+    // Under way, a failed change falls back on the accepted plan (at rest there is nothing to keep).
+    const bool fallback = frozen_.moving && (snapshot_taken_ || (held_ && !hold_stop_placed()));
     if (held_ && frozen_.moving && !hold_stop_placed()) {
+        if (!snapshot_taken_) take_snapshot();
         place_hold_stop();
         first = 0;
     }
+    snapshot_taken_ = false;
     if (first >= count_) {
         refresh_current_leg();
         return;
@@ -372,6 +396,15 @@ void Lookahead::replan(std::size_t first) {
         std::size_t bad = count_;
         if (check(from, &bad)) break;
         ++stats_.checks_failed;
+        if (fallback && (bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
+            // No plan after the hold's or the resume's change passes: the accepted one goes on
+            // (never an unchecked one) and the change is tried again at the next tick.
+            count_ = snapshot_count_;
+            for (std::size_t i = 0; i < count_; ++i) seg(i) = snapshot_[i];
+            retry_ = true;
+            refresh_current_leg();
+            return;
+        }
         if (bad == front_unfit) {  // keep the plan accepted before (the override applies from the next block)
             for (std::size_t i = kept; i < count_; ++i) seg(i) = saved_[i];
             refresh_current_leg();

@@ -207,6 +207,7 @@ private:
     void place_hold_stop();
     bool hold_stop_placed() const;
     void unsplit();  // resume before the hold's stop began: the split block is whole again
+    void take_snapshot();
     void insert_after(std::size_t i, const Segment& s);
     void erase(std::size_t i);
     // Legs of segments [first, count) (and, from segment 0, the timeline's legs before them), in
@@ -246,6 +247,13 @@ private:
     std::vector<double> when_;          // scratch: exit step centre of each segment (check clock)
     std::vector<double> enter_;         // scratch: entry step centre of each segment
     std::vector<Segment> saved_;        // the accepted plan, restored when a change fails its check
+    // A hold's stop placed, or a resume's split undone, changes the segments themselves: the
+    // accepted plan is kept whole before, and if no plan after the change passes its check, it
+    // goes on and the change is made again at the next tick, from where the motion then is.
+    std::vector<Segment> snapshot_;
+    std::size_t snapshot_count_ = 0;
+    bool snapshot_taken_ = false;       // for the replan under way
+    bool retry_ = false;                // the change failed: again at the next tick
     std::vector<CornerReport> reports_; // ring of corner reports, filled as junctions freeze
     std::size_t report_head_ = 0, report_count_ = 0;
 };
