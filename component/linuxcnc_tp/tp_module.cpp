@@ -182,8 +182,8 @@ void refresh_limits() {
     if (axis_vel_limit == nullptr || axis_acc_limit == nullptr) return;
     Pose v{}, a{};
     for (int i = 0; i < 9; ++i) {
-        v[static_cast<std::size_t>(i)] = axis_vel_limit(i);
-        a[static_cast<std::size_t>(i)] = axis_acc_limit(i);
+        v[i] = axis_vel_limit(i);
+        a[i] = axis_acc_limit(i);
     }
     core->set_axis_limits(v, a);
     report_refused_window();
