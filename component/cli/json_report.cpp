@@ -14,15 +14,11 @@ json xyz(const AxisVector& v) { return json::array({v[0], v[1], v[2]}); }
 
 json finite_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
-const char* meaning_name(ToleranceMeaning meaning) {
-    return meaning == ToleranceMeaning::contour ? "contour" : "corner";
-}
-
 json machine_json(const PlanRun& run) {
     json machine = {{"smoothing", run.parameters.fixed_chain ? "fixed_chain" : "limits"},
                     {"period_s", run.parameters.period},
                     {"default_tolerance_mm", run.machine.default_tolerance},
-                    {"tolerance_meaning", meaning_name(run.parameters.tolerance_meaning)}};
+                    {"tolerance_meaning", to_string(run.parameters.tolerance_meaning)}};
     if (run.parameters.fixed_chain) {  // the paper's chain
         const FilterTimes& f = run.parameters.filters;
         json times = json::array();

@@ -11,6 +11,16 @@
 
 namespace firtp {
 
+std::optional<ToleranceMeaning> parse_tolerance_meaning(std::string_view word) {
+    if (word == "corner") return ToleranceMeaning::corner_point;
+    if (word == "contour") return ToleranceMeaning::contour;
+    return std::nullopt;
+}
+
+const char* to_string(ToleranceMeaning meaning) {
+    return meaning == ToleranceMeaning::contour ? "contour" : "corner";
+}
+
 double FilterTimes::delay() const {
     double td = 0.0;
     for (int i = 0; i < stages; ++i) td += T[i];

@@ -151,9 +151,9 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
     if (const IniFile::Entry* e = ini.find("FIRTP", "TOLERANCE_MEANING")) {
         std::string v = e->value;
         std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (v == "corner") m.tolerance_meaning = ToleranceMeaning::corner_point;
-        else if (v == "contour") m.tolerance_meaning = ToleranceMeaning::contour;
-        else fail(ini, *e, cat("'", e->value, "' must be corner or contour"));
+        const std::optional<ToleranceMeaning> meaning = parse_tolerance_meaning(v);
+        if (!meaning) fail(ini, *e, cat("'", e->value, "' must be corner or contour"));
+        m.tolerance_meaning = *meaning;
     }
 }
 
@@ -296,15 +296,10 @@ PlannerParameters MachineConfig::planner_parameters() const {
 }
 
 MachineConfig default_machine() {
-    MachineConfig m;
-    m.period = 0.001;
+    MachineConfig m;  // the period, stages, tolerance and arc chords as MachineConfig's defaults
     m.limits.axes = 3;
     m.limits.max_linear_velocity = 0.0;
     for (std::size_t i = 0; i < 3; ++i) m.limits.axis[i] = AxisLimits{300.0, 5000.0, 100000.0};
-    m.stages = 2;
-    m.default_tolerance = 0.05;
-    m.tolerance_meaning = ToleranceMeaning::corner_point;
-    m.arc_chord_tolerance = 0.001;
     return m;
 }
 
