@@ -14,19 +14,15 @@ json xyz(const AxisVector& v) { return json::array({v[0], v[1], v[2]}); }
 
 json finite_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
-const char* meaning_name(ToleranceMeaning meaning) {
-    return meaning == ToleranceMeaning::contour ? "contour" : "corner";
-}
-
 json machine_json(const PlanRun& run) {
     json machine = {{"smoothing", run.parameters.fixed_chain ? "fixed_chain" : "limits"},
                     {"period_s", run.parameters.period},
                     {"default_tolerance_mm", run.machine.default_tolerance},
-                    {"tolerance_meaning", meaning_name(run.parameters.tolerance_meaning)}};
+                    {"tolerance_meaning", to_string(run.parameters.tolerance_meaning)}};
     if (run.parameters.fixed_chain) {  // the paper's chain
         const FilterTimes& f = run.parameters.filters;
         json times = json::array();
-        for (int i = 0; i < f.stages; ++i) times.push_back(f.T[static_cast<std::size_t>(i)]);
+        for (int i = 0; i < f.stages; ++i) times.push_back(f.T[i]);
         machine["stages"] = f.stages;
         machine["T_s"] = times;
         machine["delay_s"] = f.delay();
@@ -37,7 +33,7 @@ json machine_json(const PlanRun& run) {
 }
 
 json axis_name(int axis) {
-    return axis >= 0 ? json(std::string(1, axis_letters[static_cast<std::size_t>(axis)])) : json(nullptr);
+    return axis >= 0 ? json(std::string(1, axis_letters[axis])) : json(nullptr);
 }
 
 json corner_json(const PlanRun& run, std::size_t i) {
@@ -55,8 +51,8 @@ json corner_json(const PlanRun& run, std::size_t i) {
                    {"measured_error_mm", measured ? json(*measured) : json(nullptr)},
                    {"exact_stop", c.exact_stop}};
     if (run.parameters.fixed_chain) {
-        corner["tk_s"] = c.tk;
-        corner["tk_tolerance_s"] = c.tk_tolerance;
+        corner["tk_s"] = c.Tk;
+        corner["tk_tolerance_s"] = c.Tk_tolerance;
     }
     return corner;
 }

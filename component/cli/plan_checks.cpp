@@ -16,9 +16,9 @@ constexpr double rounding = 1e-6;  // relative: the differences of the samples r
 void check_axis(std::vector<std::string>& out, const char* what, const char* unit, const AxisVector& measured,
                 const MachineLimits& limits, double AxisLimits::*limit) {
     for (int a = 0; a < limits.axes; ++a) {
-        const double l = limits.axis[static_cast<std::size_t>(a)].*limit;
+        const double l = limits.axis[a].*limit;
         if (l > 0.0 && measured[a] > l * (1.0 + rounding))
-            out.push_back(cat("axis ", std::string(1, axis_letters[static_cast<std::size_t>(a)]), " ", what, " ", number_text(measured[a]),
+            out.push_back(cat("axis ", std::string(1, axis_letters[a]), " ", what, " ", number_text(measured[a]),
                               " ", unit, " above its limit ", number_text(l)));
     }
 }

@@ -29,7 +29,7 @@ po::options_description machine_flags() {
          "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]MAX_LINEAR_VELOCITY, "
          "[AXIS_<L>]MAX_VELOCITY/MAX_ACCELERATION/MAX_JERK, [DISPLAY]MAX_FEED_OVERRIDE, [FIRTP]STAGES T1..T4 "
          "MODES TOLERANCE TOLERANCE_MEANING ARC_CHORD_TOLERANCE RATE_RESERVE MAX_PROGRAM_BLOCKS. Without it: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3, 1 ms period, "
-         "every move smoothed at those limits, 0.05 mm tolerance")
+         "every move smoothed at those limits, " FIRTP_DEFAULT_TOLERANCE_TEXT " mm tolerance")
         ("t1", po::value<double>()->value_name("S"), "first FIR stage time T1 in seconds: the paper's fixed chain instead of smoothing at the limits")
         ("t2", po::value<double>()->value_name("S"), "second FIR stage time T2 in seconds (T2 <= T1)")
         ("tolerance", po::value<double>()->value_name("MM"),
@@ -97,8 +97,7 @@ std::vector<std::string> join_negative_values(std::span<const std::string> args)
 }
 
 ToleranceMeaning parse_meaning(const std::string& text) {
-    if (text == "corner") return ToleranceMeaning::corner_point;
-    if (text == "contour") return ToleranceMeaning::contour;
+    if (const std::optional<ToleranceMeaning> meaning = parse_tolerance_meaning(text)) return *meaning;
     throw UsageError("--tolerance-meaning: '" + text + "' must be corner or contour");
 }
 

@@ -99,7 +99,7 @@ void take_measurement(PlanRun& run, Measured measured) {
     if (run.parameters.fixed_chain && run.points.size() > 1) {
         const double td = run.parameters.filters.delay();
         double gaps = 0.0;
-        for (const CornerReport& c : corners) gaps += td - c.tk;
+        for (const CornerReport& c : corners) gaps += td - c.Tk;
         run.closed_form_cycle_time = run.feed_time + gaps + td;
     }
 }

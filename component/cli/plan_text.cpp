@@ -19,7 +19,7 @@ std::string machine_text(const PlanRun& run) {
     std::string smoothing;
     if (p.fixed_chain) {
         std::string times;
-        for (int i = 0; i < p.filters.stages; ++i) times += cat(i ? ", " : "", ms(p.filters.T[static_cast<std::size_t>(i)]));
+        for (int i = 0; i < p.filters.stages; ++i) times += cat(i ? ", " : "", ms(p.filters.T[i]));
         smoothing = cat(std::to_string(p.filters.stages), " FIR stages, T = ", times, " ms (Td ", ms(p.filters.delay()), " ms)");
     } else {
         smoothing = cat("smoothing at the axis limits (jerk time T2 = ", ms(jerk_time(p.limits)), " ms)");
@@ -31,7 +31,7 @@ std::string machine_text(const PlanRun& run) {
 std::string bound_text(const CornerReport& c) {
     std::string text = describe(c.bound);
     if ((c.bound == CornerBound::tolerance || c.bound == CornerBound::room) && c.axis >= 0)
-        text += cat(", ", std::string(1, axis_letters[static_cast<std::size_t>(c.axis)]), " at its acceleration limit");
+        text += cat(", ", std::string(1, axis_letters[c.axis]), " at its acceleration limit");
     return text;
 }
 

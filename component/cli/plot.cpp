@@ -51,7 +51,7 @@ std::string zoom_title(const PlanRun& run, std::size_t z, const ZoomSamples& zoo
     const CornerReport& c = run.trajectory.corners[zoom.corner];
     const auto& measured = run.corner_errors[zoom.corner];
     std::string title = cat("#", std::to_string(z + 1), " line ", std::to_string(c.line), ", ",
-                            fixed_text(c.beta * 180.0 / std::numbers::pi, 1), " deg, Tk ", fixed_text(c.tk * 1e3, 2),
+                            fixed_text(c.beta * 180.0 / std::numbers::pi, 1), " deg, Tk ", fixed_text(c.Tk * 1e3, 2),
                             " ms\nerror ", measured ? fixed_text(*measured, 4) : std::string("?"));
     if (c.exact_stop) title += " mm (exact stop)";
     else if (std::isfinite(c.epsilon)) title += cat(" / tol ", fixed_text(c.epsilon, 4), " mm");

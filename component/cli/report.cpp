@@ -28,7 +28,7 @@ constexpr int max_plotted_axes = 3;
 
 std::string ms(double seconds) { return fixed_text(seconds * 1e3, 3); }
 
-std::string letter(int axis) { return std::string(1, axis_letters[static_cast<std::size_t>(axis)]); }
+std::string letter(int axis) { return std::string(1, axis_letters[axis]); }
 
 // Axes that move, in order, at most three (X Y Z first when they move).
 std::vector<int> moving_axes(const PlanRun& run) {
@@ -86,8 +86,8 @@ void kinematics_table(std::ostream& md, const PlanRun& run) {
        << "| axis | max velocity | limit | max acceleration | planned limit | limit | max jerk | planned limit | limit |\n"
        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (int a = 0; a < run.machine.limits.axes; ++a) {
-        const AxisLimits& l = run.parameters.limits.axis[static_cast<std::size_t>(a)];
-        const AxisLimits& p = planned.axis[static_cast<std::size_t>(a)];
+        const AxisLimits& l = run.parameters.limits.axis[a];
+        const AxisLimits& p = planned.axis[a];
         md << "| " << letter(a) << " | " << fixed_text(run.measured.max_velocity[a], 1) << " | " << limit(l.max_velocity)
            << " | " << fixed_text(run.measured.max_acceleration[a], 0) << " | " << limit(p.max_acceleration) << " | "
            << limit(l.max_acceleration) << " | " << fixed_text(run.measured.max_jerk[a], 0) << " | "
@@ -114,7 +114,7 @@ void corner_table(std::ostream& md, const PlanRun& run) {
     for (std::size_t i = 0; i < corners.size() && i < max_corner_rows; ++i) {
         const CornerReport& c = corners[i];
         md << "| " << i + 1 << " | " << c.line << " | " << fixed_text(c.beta * 180.0 / std::numbers::pi, 1) << " | ";
-        if (chain) md << (c.exact_stop ? std::string("stop") : ms(c.tk));
+        if (chain) md << (c.exact_stop ? std::string("stop") : ms(c.Tk));
         else md << fixed_text(c.speed_in, 1) << " / " << fixed_text(c.speed_out, 1) << " | " << bound_text(c);
         md << " | " << (std::isfinite(c.epsilon) ? fixed_text(c.epsilon, 4) : std::string("none")) << " | "
            << fixed_text(c.predicted_error, 4) << " | "

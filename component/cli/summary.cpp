@@ -36,7 +36,7 @@ std::string corner_line(const PlanRun& run) {
 std::string axis_max(const AxisVector& v, int decimals) {
     Eigen::Index axis = 0;
     const double value = v.head<3>().maxCoeff(&axis);
-    return fixed_text(value, decimals) + " (" + axis_letters[static_cast<std::size_t>(axis)] + ")";
+    return fixed_text(value, decimals) + " (" + axis_letters[axis] + ")";
 }
 
 // One line per kind of non-motion event, in the order of EventKind (the end, M2/M30, which every

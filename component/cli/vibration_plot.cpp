@@ -89,7 +89,7 @@ std::string response_plot_script(const VibrationStudy& study, const std::filesys
 
 std::string chain_label(const std::string& name, const FilterTimes& filters) {
     std::string text = name + ": T = ";
-    for (int i = 0; i < filters.stages; ++i) text += cat(i ? ", " : "", fixed_text(filters.T[static_cast<std::size_t>(i)] * 1e3, 1));
+    for (int i = 0; i < filters.stages; ++i) text += cat(i ? ", " : "", fixed_text(filters.T[i] * 1e3, 1));
     return text + " ms";
 }
 
@@ -143,7 +143,7 @@ std::string spectrum_plot_script(const SpectrumPlot& plot, const std::filesystem
       << "set xrange [0:" << plot.max_hz << "]\n";
     mode_marks(s, plot.marks);
     for (std::size_t a = 0; a < plot.axes.size(); ++a) {
-        s << "set title " << gnuplot_quote(cat("axis ", std::string(1, axis_letters[static_cast<std::size_t>(plot.axes[a])]),
+        s << "set title " << gnuplot_quote(cat("axis ", std::string(1, axis_letters[plot.axes[a]]),
                                                ": |DFT| of the acceleration (Eq. 9: the chain's magnitude shapes it)"))
           << " noenhanced\nset ylabel '|A(f)| [mm/s]'\nplot ";
         for (std::size_t k = 0; k < plot.series.size(); ++k)

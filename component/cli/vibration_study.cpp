@@ -19,7 +19,7 @@ constexpr double settle_periods = 4.0;  // ... or this many periods of the slowe
 
 std::string times_text(const FilterTimes& f) {
     std::string text = "T = ";
-    for (int i = 0; i < f.stages; ++i) text += cat(i ? ", " : "", fixed_text(f.T[static_cast<std::size_t>(i)] * 1e3, 3));
+    for (int i = 0; i < f.stages; ++i) text += cat(i ? ", " : "", fixed_text(f.T[i] * 1e3, 3));
     return cat(text, " ms (Td ", fixed_text(f.delay() * 1e3, 3), " ms)");
 }
 
@@ -87,7 +87,7 @@ std::vector<PlantMode> plant_modes(const MachineConfig& machine, const std::vect
 }  // namespace
 
 std::string plant_name(const PlantMode& mode) {
-    return cat(std::string(1, axis_letters[static_cast<std::size_t>(mode.axis)]), " ", fixed_text(mode.frequency_hz, 2),
+    return cat(std::string(1, axis_letters[mode.axis]), " ", fixed_text(mode.frequency_hz, 2),
                " Hz");
 }
 

@@ -21,17 +21,17 @@ std::string percent(double value, double reference) {
 
 std::string mm(double value) { return cat(fixed_text(value, 6), " mm"); }
 
-std::string letter(int axis) { return std::string(1, axis_letters[static_cast<std::size_t>(axis)]); }
+std::string letter(int axis) { return std::string(1, axis_letters[axis]); }
 
 std::string stage_roles(const VibrationStudy& s) {
     std::string text;
     for (int i = 0; i < s.tuned.filters.stages; ++i) {
-        const TunedStage& st = s.tuned.stages[static_cast<std::size_t>(i)];
+        const TunedStage& st = s.tuned.stages[i];
         text += i ? ", " : "";
         text += fixed_text(st.time * 1e3, 3) + " ms ";
         if (st.mode < 0) text += "for the limits";
         else
-            text += cat("on ", fixed_text(st.zero_hz, 2), " Hz (", fixed_text(s.tuned.modes[static_cast<std::size_t>(st.mode)].frequency_hz, 2),
+            text += cat("on ", fixed_text(st.zero_hz, 2), " Hz (", fixed_text(s.tuned.modes[st.mode].frequency_hz, 2),
                         " Hz mode, k ", std::to_string(st.k), ")");
     }
     return text;
@@ -167,7 +167,7 @@ json band_json(const FrequencyBand& b) {
 
 json times_json(const FilterTimes& f) {
     json t = json::array();
-    for (int i = 0; i < f.stages; ++i) t.push_back(f.T[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < f.stages; ++i) t.push_back(f.T[i]);
     return t;
 }
 
@@ -186,9 +186,9 @@ json vibration_json(const VibrationStudy& s) {
     }
     json stages = json::array();
     for (int i = 0; i < s.tuned.filters.stages; ++i) {
-        const TunedStage& st = s.tuned.stages[static_cast<std::size_t>(i)];
+        const TunedStage& st = s.tuned.stages[i];
         stages.push_back({{"T_s", st.time},
-                          {"mode_hz", st.mode < 0 ? json(nullptr) : json(s.tuned.modes[static_cast<std::size_t>(st.mode)].frequency_hz)},
+                          {"mode_hz", st.mode < 0 ? json(nullptr) : json(s.tuned.modes[st.mode].frequency_hz)},
                           {"zero_hz", st.mode < 0 ? json(nullptr) : json(st.zero_hz)},
                           {"k", st.k}});
     }

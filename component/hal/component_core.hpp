@@ -38,7 +38,7 @@ struct ComponentSettings {
     int max_blocks_per_period = 32;      // stream records planned per period at most
     std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
-    double default_tolerance = 0.05;     // for pin blocks whose tolerance is 0
+    double default_tolerance = defaults::tolerance;  // for pin blocks whose tolerance is 0
     double brake_speed = 1.0;            // feedback speed (units/s, any axis) that counts as moving at a start
 };
 

@@ -56,10 +56,10 @@ RTAPI_MP_STRING(t3, "T3 in seconds");
 static char* t4 = nullptr;
 RTAPI_MP_STRING(t4, "T4 in seconds");
 static char* tolerance = nullptr;
-RTAPI_MP_STRING(tolerance, "default corner tolerance in machine units for pin blocks with tolerance 0 (0.05)");
+RTAPI_MP_STRING(tolerance, "default corner tolerance in machine units for pin blocks with tolerance 0 (" FIRTP_DEFAULT_TOLERANCE_TEXT ")");
 static char* meaning = nullptr;
 RTAPI_MP_STRING(meaning, "what the tolerance bounds: corner (closest approach to the corner point) or contour");
-static long period_ns = 1000000;
+static long period_ns = firtp::defaults::servo_period_ns;
 RTAPI_MP_LONG(period_ns, "period of the thread firtp.update runs in, ns");
 static char* max_velocity = nullptr;
 RTAPI_MP_STRING(max_velocity, "per-axis velocity limits, units/s, comma separated (0: none)");
@@ -78,9 +78,9 @@ RTAPI_MP_LONG(block_key, "hal_stream key of the block stream (0: pins only)");
 static long state_key = firtp::stream::default_state_key;
 RTAPI_MP_LONG(state_key, "hal_stream key of the axis-state stream (0: none)");
 static char* max_feed_override = nullptr;
-RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_OVERRIDE); limits hold up to it (1)");
+RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_OVERRIDE); limits hold up to it (" FIRTP_DEFAULT_MAX_FEED_OVERRIDE_TEXT ")");
 static char* rate_reserve = nullptr;
-RTAPI_MP_STRING(rate_reserve, "fixed chain: share of acceleration and jerk limits kept for override and hold ramps (0.2)");
+RTAPI_MP_STRING(rate_reserve, "fixed chain: share of acceleration and jerk limits kept for override and hold ramps (" FIRTP_DEFAULT_RATE_RESERVE_TEXT ")");
 static int stream_depth = 4096;
 RTAPI_MP_INT(stream_depth, "records each stream holds");
 static char* brake_speed = nullptr;
@@ -377,8 +377,7 @@ firtp::ComponentSettings settings_from_parameters() {
         if (const char* why = firtp::validate_window(s.planner.filters, s.planner.period); *why)
             refuse("t1..t4 and period_ns", period_text.c_str(), why);
     }
-    s.planner.tolerance_meaning = meaning && std::strcmp(meaning, "contour") == 0 ? firtp::ToleranceMeaning::contour
-                                                                                 : firtp::ToleranceMeaning::corner_point;
+    if (meaning) s.planner.tolerance_meaning = *firtp::parse_tolerance_meaning(meaning);  // checked at load
     s.planner.limits.axes = axes;
     read_limits("max_velocity", max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
     read_limits("max_acceleration", max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
@@ -396,11 +395,11 @@ firtp::ComponentSettings settings_from_parameters() {
     s.plan_budget_ns = static_cast<std::int64_t>(plan_budget_us) * 1000;
     if (stream_depth < 2) refuse("stream_depth", std::to_string(stream_depth).c_str(), "must be at least 2");
     s.clock_ns = [] { return static_cast<std::int64_t>(rtapi_get_time()); };
-    s.default_tolerance = number("tolerance", tolerance, 0.05);
+    s.default_tolerance = number("tolerance", tolerance, firtp::defaults::tolerance);
     if (!(s.default_tolerance > 0.0)) refuse("tolerance", tolerance, "must be positive");
-    s.planner.max_rate = number("max_feed_override", max_feed_override, 1.0);
+    s.planner.max_rate = number("max_feed_override", max_feed_override, firtp::defaults::max_feed_override);
     if (!(s.planner.max_rate >= 1.0)) refuse("max_feed_override", max_feed_override, "must be at least 1 (100 %)");
-    s.planner.rate_reserve = number("rate_reserve", rate_reserve, 0.2);
+    s.planner.rate_reserve = number("rate_reserve", rate_reserve, firtp::defaults::rate_reserve);
     if (!(s.planner.rate_reserve > 0.0 && s.planner.rate_reserve < 1.0))
         refuse("rate_reserve", rate_reserve, "must lie between 0 and 1 (a share of the acceleration and jerk limits)");
     s.brake_speed = number("brake_speed", brake_speed, 1.0);
@@ -424,7 +423,7 @@ extern "C" int rtapi_app_main(void) {
     comp_id = hal_init("firtp");
     if (comp_id < 0) return comp_id;
     if (axes < 1 || axes > firtp::max_axes) return fail(("axes=" + std::to_string(axes) + ": must be 1 to 9").c_str());
-    if (meaning && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
+    if (meaning && !firtp::parse_tolerance_meaning(meaning))
         return fail((std::string("meaning=") + meaning + ": must be corner or contour").c_str());
     firtp::ComponentSettings settings;
     try {

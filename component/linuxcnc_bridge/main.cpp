@@ -15,6 +15,7 @@
 #include "motion_publisher.hpp"
 
 #include <firtp/bridge.hpp>
+#include <firtp/defaults.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/version.hpp>
 
@@ -38,7 +39,7 @@ struct Options {
     std::string name = "firtp-lcm-bridge";
     std::string url;
     int axes = 3;
-    long period_ns = 1000000;
+    long period_ns = firtp::defaults::servo_period_ns;
     int sampler_channel = 0;
     int live_decimation = 20;
     int status_every = 10;
@@ -55,7 +56,7 @@ bool parse(int argc, char** argv, Options& o, int& code) {
         "name", po::value(&o.name)->value_name("NAME"), "HAL component name and pin prefix (firtp-lcm-bridge)")(
         "lcm-url", po::value(&o.url)->value_name("URL"), "LCM provider (LCM's default group, ttl=0: this host)")(
         "axes", po::value(&o.axes)->value_name("N"), "axes, 1-9 (3): firtp's axes= or the sampler's positions")(
-        "period-ns", po::value(&o.period_ns)->value_name("NS"), "servo period ([EMCMOT]SERVO_PERIOD, 1000000)")(
+        "period-ns", po::value(&o.period_ns)->value_name("NS"), ("servo period ([EMCMOT]SERVO_PERIOD, " + std::to_string(firtp::defaults::servo_period_ns) + ")").c_str())(
         "sampler-channel", po::value(&o.sampler_channel)->value_name("N"), "motion: the sampler channel (0)")(
         "live-decimation", po::value(&o.live_decimation)->value_name("N"), "FIRTP_AXIS_STATE_LIVE every N periods (20)")(
         "status-every", po::value(&o.status_every)->value_name("N"), "FIRTP_STATUS every N periods and on changes (10)")(

@@ -7,6 +7,7 @@
 // ticks, reported as ERROR_LOST_STATE with their count and on the pin `lost`.
 #pragma once
 
+#include <firtp/defaults.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/types.hpp>
 
@@ -19,7 +20,7 @@ namespace firtp {
 struct MotionOptions {
     std::string name = "firtp-lcm-bridge";  // HAL component name and pin prefix
     int axes = 3;                           // sampler columns 0..axes-1: positions (X Y Z ...)
-    double period = 0.001;                  // servo period, s
+    double period = defaults::servo_period;  // servo period, s
     int sampler_channel = 0;                // `loadrt sampler` channel N (its hal_stream)
     int live_decimation = 20;               // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
     int status_every = 10;                  // FIRTP_STATUS every N periods, and on every change

@@ -188,7 +188,7 @@ struct TpCore::Impl {
     void update_wanted() {
         PlannerParameters p;
         p.period = period;
-        p.tolerance_meaning = s.contour_tolerance ? ToleranceMeaning::contour : ToleranceMeaning::corner_point;
+        p.tolerance_meaning = s.tolerance_meaning;
         p.queue_capacity = s.blocks;
         p.max_rate = max_rate;
         p.rate_reserve = s.rate_reserve;

@@ -29,6 +29,9 @@
 // allocation (except the rebuild, see above), no locks, no I/O, no exceptions, bounded time.
 #pragma once
 
+#include <firtp/defaults.hpp>
+#include <firtp/parameters.hpp>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -48,14 +51,14 @@ enum MotionTypes : int { motion_traverse = 1, motion_feed = 2, motion_arc = 3, m
                          motion_indexrotary = 6 };
 
 struct TpSettings {
-    double period = 0.001;             // s; tpSetCycleTime changes it
+    double period = defaults::servo_period;  // s; tpSetCycleTime changes it
     int stages = 2;                    // FIR stages, 1..4
     std::array<double, 4> filter_times{0.0, 0.0, 0.0, 0.0};  // s, 0: T1 = max v/a, T2 = max a/j over the axes
     double jerk = 100000.0;            // units/s^3 on every axis (0: none); LinuxCNC 2.9 has no jerk limits
-    double default_tolerance = 0.05;   // units: G64 without P, and inside arcs in G61/G61.1
-    bool contour_tolerance = false;    // false: the tolerance bounds the corner point (firtp's default)
-    double chord_tolerance = 0.001;    // units: largest sagitta of an arc's chords
-    double rate_reserve = 0.2;         // share of acceleration and jerk kept for override/hold ramps (0..1)
+    double default_tolerance = defaults::tolerance;  // units: G64 without P, and inside arcs in G61/G61.1
+    ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // what the tolerance bounds
+    double chord_tolerance = defaults::arc_chord_tolerance;  // units: largest sagitta of an arc's chords
+    double rate_reserve = defaults::rate_reserve;  // share of acceleration and jerk kept for override/hold ramps (0..1)
     std::size_t moves = 1024;          // moves accepted and not finished, at most
     std::size_t full_margin = 16;      // full() this many moves before the ring is
     std::size_t blocks = 4096;         // planned blocks not yet retired (interpolator), at most

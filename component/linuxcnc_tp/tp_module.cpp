@@ -47,6 +47,7 @@ extern "C" {
 #include <cstring>
 #include <exception>
 #include <new>
+#include <optional>
 
 MODULE_AUTHOR("firtp");
 MODULE_DESCRIPTION("firtp: FIR-filter corner smoothing (Sencer et al. 2015) as LinuxCNC's trajectory planner");
@@ -67,11 +68,11 @@ static char* jerk = nullptr;
 RTAPI_MP_STRING(jerk, "jerk limit of every axis, machine units/s^3 (0: none); overrides the INI's [TRAJ]MAX_LINEAR_JERK "
                       "and [AXIS_L]MAX_JERK (the smallest of those; without them 100000)");
 static char* tolerance = nullptr;
-RTAPI_MP_STRING(tolerance, "tolerance for G64 without P (and inside arcs in G61), machine units (0.05)");
+RTAPI_MP_STRING(tolerance, "tolerance for G64 without P (and inside arcs in G61), machine units (" FIRTP_DEFAULT_TOLERANCE_TEXT ")");
 static char* chord_tol = nullptr;
-RTAPI_MP_STRING(chord_tol, "largest sagitta of an arc's chords, machine units (0.001)");
+RTAPI_MP_STRING(chord_tol, "largest sagitta of an arc's chords, machine units (" FIRTP_DEFAULT_ARC_CHORD_TOLERANCE_TEXT ")");
 static char* rate_reserve = nullptr;
-RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk kept for feed override, hold and abort ramps (0.2)");
+RTAPI_MP_STRING(rate_reserve, "share of acceleration and jerk kept for feed override, hold and abort ramps (" FIRTP_DEFAULT_RATE_RESERVE_TEXT ")");
 static char* meaning = nullptr;
 RTAPI_MP_STRING(meaning, "what a tolerance bounds: corner (closest approach to the corner point, default) or contour");
 static int queue = 1024;
@@ -182,8 +183,8 @@ void refresh_limits() {
     if (axis_vel_limit == nullptr || axis_acc_limit == nullptr) return;
     Pose v{}, a{};
     for (int i = 0; i < 9; ++i) {
-        v[static_cast<std::size_t>(i)] = axis_vel_limit(i);
-        a[static_cast<std::size_t>(i)] = axis_acc_limit(i);
+        v[i] = axis_vel_limit(i);
+        a[i] = axis_acc_limit(i);
     }
     core->set_axis_limits(v, a);
     report_refused_window();
@@ -275,7 +276,7 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     p->tolerance = s.default_tolerance;
     p->chord_tol = s.chord_tolerance;
     p->rate_reserve = s.rate_reserve;
-    p->contour = s.contour_tolerance;
+    p->contour = s.tolerance_meaning == firtp::ToleranceMeaning::contour;
     p->queue = static_cast<rtapi_s32>(s.moves);
     p->blocks = static_cast<rtapi_s32>(s.blocks);
     p->max_blocks = s.max_blocks_per_cycle;
@@ -579,12 +580,13 @@ extern "C" int rtapi_app_main(void) {
     s.stages = stages;
     const char* times[4] = {t1, t2, t3, t4};
     for (std::size_t i = 0; i < 4; ++i) s.filter_times[i] = number(times[i], 0.0);
-    s.default_tolerance = number(tolerance, 0.05);
-    s.chord_tolerance = number(chord_tol, 0.001);
-    s.rate_reserve = number(rate_reserve, 0.2);
-    if (meaning != nullptr && std::strcmp(meaning, "contour") != 0 && std::strcmp(meaning, "corner") != 0)
-        return fail("meaning must be corner or contour");
-    s.contour_tolerance = meaning != nullptr && std::strcmp(meaning, "contour") == 0;
+    s.default_tolerance = number(tolerance, firtp::defaults::tolerance);
+    s.chord_tolerance = number(chord_tol, firtp::defaults::arc_chord_tolerance);
+    s.rate_reserve = number(rate_reserve, firtp::defaults::rate_reserve);
+    const std::optional<firtp::ToleranceMeaning> given_meaning =
+        meaning != nullptr ? firtp::parse_tolerance_meaning(meaning) : s.tolerance_meaning;
+    if (!given_meaning) return fail("meaning must be corner or contour");
+    s.tolerance_meaning = *given_meaning;
     s.moves = queue > 0 ? static_cast<std::size_t>(queue) : 0;
     s.blocks = blocks > 0 ? static_cast<std::size_t>(blocks) : 0;
     s.max_blocks_per_cycle = max_blocks;

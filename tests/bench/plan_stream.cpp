@@ -223,7 +223,7 @@ int main(int argc, char** argv) try {
         planner.tick(state);
         for (CornerReport corner; planner.take_report(corner);) {
             ++corners;
-            gaps += td - corner.tk;
+            gaps += td - corner.Tk;
         }
         ++ticks;
         max_speed = std::max(max_speed, state.velocity.norm());

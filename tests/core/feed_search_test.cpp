@@ -51,7 +51,7 @@ TEST(FeedSearch, StopAfterAShortBlockKeepsTheFeed) {
     EXPECT_EQ(plan.stats.slowed, 0u);
     EXPECT_EQ(plan.stats.crawling, 0u);
     ASSERT_EQ(plan.corners.size(), 1u);
-    EXPECT_EQ(plan.corners[0].tk, 0.0);
+    EXPECT_EQ(plan.corners[0].Tk, 0.0);
     // Two pulses and two filter delays; the stop rests one to two periods on the corner.
     const double closed_form = (50.0 + short_length) / feed + 2 * p.filters.delay();
     EXPECT_GE(plan.cycle_time, closed_form + p.period - 1e-9);

@@ -59,9 +59,9 @@ TEST(Overlap, Eq14BranchesMeetAtTwoT2AndGiveTheSectionFourOverlap) {
     const double T1 = 0.148, T2 = 0.089, F = 250.0, beta = 90 * deg;
     EXPECT_NEAR(overlap_eq14(0.5, F, beta, T1, T2), 0.09634, 5e-6);  // paper notes: 96.34 ms
     // Error at Tk = 2 T2 from either branch's formula is the same.
-    const double s = std::sin(beta / 2), tk = 2 * T2;
-    const double short_branch = F * s * tk * tk * tk / (24 * T1 * T2);
-    const double long_branch = F * s / (4 * T1) * ((tk - T2) * (tk - T2) + T2 * T2 / 3);
+    const double s = std::sin(beta / 2), Tk = 2 * T2;
+    const double short_branch = F * s * Tk * Tk * Tk / (24 * T1 * T2);
+    const double long_branch = F * s / (4 * T1) * ((Tk - T2) * (Tk - T2) + T2 * T2 / 3);
     EXPECT_NEAR(short_branch, long_branch, 1e-12);
 }
 
@@ -73,11 +73,11 @@ TEST(Overlap, ClosedFormsMatchTheMeasuredCornerErrorOfASimulatedChain) {
         for (double eps : {0.05, 0.5, 2.0})
             for (double a : angles_deg) {
                 const double F = 250.0, beta = a * deg;
-                const double tk = f.stages == 1   ? overlap_eq13(eps, F, beta, f.T[0])
+                const double Tk = f.stages == 1   ? overlap_eq13(eps, F, beta, f.T[0])
                                   : f.stages == 2 ? overlap_eq14(eps, F, beta, f.T[0], f.T[1])
                                                   : overlap_symmetric(chain, eps, F, beta);
-                const double measured = measured_corner_error(f, F, beta, tk);
-                if (tk < f.delay() - 1e-12) {
+                const double measured = measured_corner_error(f, F, beta, Tk);
+                if (Tk < f.delay() - 1e-12) {
                     EXPECT_NEAR(measured, eps, 2e-4 * eps) << f.stages << " stages, eps " << eps << ", beta " << a;
                 } else {
                     EXPECT_LE(measured, eps * (1 + 2e-4)) << f.stages << " stages, full overlap, beta " << a;
@@ -96,18 +96,18 @@ TEST(Overlap, SolverKeepsTheSampledErrorWithinToleranceForUnequalFeedsAndShortBl
         const AxisVector in = xyz(c.l_in, 0), out = xyz(c.l_out * std::cos(beta), c.l_out * std::sin(beta));
         const CornerModel model{&chain, in, c.l_in / c.f_in, out, c.l_out / c.f_out};
         const double eps = 0.05, dt = 1e-5;
-        const double tk_max = std::min({f.delay(), model.in_tv + f.delay(), 0.5 * (model.out_tv + f.delay())});
-        const double tk = solve_overlap(model, eps, ToleranceMeaning::corner_point, 1e-3, tk_max);
-        const std::vector<test::Pulse> pulses{{in, 0.0, model.in_tv}, {out, model.in_tv + f.delay() - tk, model.out_tv}};
+        const double Tk_max = std::min({f.delay(), model.in_tv + f.delay(), 0.5 * (model.out_tv + f.delay())});
+        const double Tk = solve_overlap(model, eps, ToleranceMeaning::corner_point, 1e-3, Tk_max);
+        const std::vector<test::Pulse> pulses{{in, 0.0, model.in_tv}, {out, model.in_tv + f.delay() - Tk, model.out_tv}};
         const int steps = static_cast<int>((model.in_tv + model.out_tv + 2 * f.delay()) / dt);
         const auto p = test::simulate_discrete_fir(f, AxisVector::Zero(), pulses, dt, steps);
         double closest = 1e300;
         for (const AxisVector& q : p) closest = std::min(closest, (q - in).norm());
         EXPECT_LE(closest, eps) << "case f_in " << c.f_in << " f_out " << c.f_out;
-        if (tk < tk_max) {
+        if (Tk < Tk_max) {
             EXPECT_GT(closest, 0.9 * eps) << "needlessly conservative, f_in " << c.f_in;
         }
-        EXPECT_NEAR(model.corner_error(tk), closest, 1e-3 * eps + 1e-6);
+        EXPECT_NEAR(model.corner_error(Tk), closest, 1e-3 * eps + 1e-6);
     }
 }
 
@@ -119,11 +119,11 @@ TEST(Overlap, ContourMeaningAllowsMoreOverlapAndBoundsTheDistanceToThePath) {
         const double beta = a * deg;
         const AxisVector in = xyz(F * tv, 0), out = xyz(F * tv * std::cos(beta), F * tv * std::sin(beta));
         const CornerModel model{&chain, in, tv, out, tv};
-        const double tk_corner = solve_overlap(model, eps, ToleranceMeaning::corner_point, 1e-3, f.delay());
-        const double tk_contour = solve_overlap(model, eps, ToleranceMeaning::contour, 1e-3, f.delay());
-        EXPECT_GT(tk_contour, tk_corner);
-        EXPECT_LE(model.contour_error(tk_contour), eps * (1 + 1e-9));
+        const double Tk_corner = solve_overlap(model, eps, ToleranceMeaning::corner_point, 1e-3, f.delay());
+        const double Tk_contour = solve_overlap(model, eps, ToleranceMeaning::contour, 1e-3, f.delay());
+        EXPECT_GT(Tk_contour, Tk_corner);
+        EXPECT_LE(model.contour_error(Tk_contour), eps * (1 + 1e-9));
         // Symmetric case: contour error is the corner error times cos(beta / 2) (paper notes).
-        EXPECT_NEAR(model.contour_error(tk_corner), model.corner_error(tk_corner) * std::cos(beta / 2), 1e-6);
+        EXPECT_NEAR(model.contour_error(Tk_corner), model.corner_error(Tk_corner) * std::cos(beta / 2), 1e-6);
     }
 }

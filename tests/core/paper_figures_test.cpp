@@ -88,7 +88,7 @@ TEST_F(Figure4, ToleranceGivesTheOverlapOfEq13AndIsKept) {
     const Trajectory t = plan_trajectory(parameters, AxisVector::Zero(), blocks);
     const Measured m = measure(t.samples, points_of(AxisVector::Zero(), blocks), parameters.period);
     ASSERT_EQ(t.corners.size(), 1u);
-    EXPECT_NEAR(t.corners[0].tk_tolerance, overlap_eq13(0.0442, 50, M_PI / 2, 0.020), 2e-4);
+    EXPECT_NEAR(t.corners[0].Tk_tolerance, overlap_eq13(0.0442, 50, M_PI / 2, 0.020), 2e-4);
     EXPECT_LE(m.corner_errors[0], 0.0442);
     EXPECT_GT(m.corner_errors[0], 0.0442 * 0.97);
 }
@@ -109,12 +109,12 @@ TEST(Diamond, EveryCornerWithinHalfAMillimetreAndCycleTimeOfTheClosedForm) {
         EXPECT_GT(e, 0.49);  // the tolerance is used, not wasted
     }
     const double tv = std::hypot(25.0, 25.0) / 250, td = 0.148 + 0.089;
-    const double tk = overlap_eq14(0.5, 250, M_PI / 2, 0.148, 0.089);
-    const double closed_form = 4 * tv + 3 * (td - tk) + td;
+    const double Tk = overlap_eq14(0.5, 250, M_PI / 2, 0.148, 0.089);
+    const double closed_form = 4 * tv + 3 * (td - Tk) + td;
     EXPECT_NEAR(closed_form, 1.2247, 1e-4);
     EXPECT_NEAR(m.cycle_time, closed_form, 0.01 * closed_form);
     EXPECT_EQ(m.end_position, AxisVector::Zero());
     EXPECT_LT(m.max_path_speed, 250.0);
     EXPECT_NEAR(m.max_path_speed, 207, 3);  // blocks shorter than T1: the speed never reaches F
-    for (const CornerReport& c : t.corners) EXPECT_NEAR(c.tk, 0.09634, 0.001);
+    for (const CornerReport& c : t.corners) EXPECT_NEAR(c.Tk, 0.09634, 0.001);
 }

@@ -41,6 +41,35 @@ for suffix in $(grep -oE '\{&pins->[a-z_]+, "[a-z-]+"\}' "$src/component/linuxcn
   grep -qF "firtp_tp.$suffix" <<< "$tp_text" || { echo "FAIL: firtp_tp.9 does not mention pin firtp_tp.$suffix"; fail=1; }
 done
 
+# Each default a page or the GUIDE states is the one in firtp/defaults.hpp (the modules' and the
+# CLI's help texts are made from the same texts there).
+defaults_h="$src/component/core/include/firtp/defaults.hpp"
+default_text() { sed -nE "s/^#define FIRTP_DEFAULT_$1_TEXT \"(.*)\"$/\1/p" "$defaults_h"; }
+period_ns=$(sed -nE "s/.*servo_period_ns = ([0-9']+);.*/\1/p" "$defaults_h" | tr -d "'")
+# file, what it must contain (a fixed string), what for
+require() {
+  grep -qF -- "$2" "$1" || { echo "FAIL: $(basename "$1") does not state $3 as firtp/defaults.hpp does: $2"; fail=1; }
+}
+tolerance=$(default_text TOLERANCE) reserve=$(default_text RATE_RESERVE)
+chord=$(default_text ARC_CHORD_TOLERANCE) override=$(default_text MAX_FEED_OVERRIDE)
+for v in "$tolerance" "$reserve" "$chord" "$override" "$period_ns"; do
+  [ -n "$v" ] || { echo "FAIL: a default missing from $defaults_h"; fail=1; }
+done
+require "$src/docs/man/firtp.9" "\fBtolerance\fR (machine units, $tolerance)" "tolerance"
+require "$src/docs/man/firtp.9" "\fBmax_feed_override\fR ($override)" "max_feed_override"
+require "$src/docs/man/firtp.9" "\fBrate_reserve\fR ($reserve)" "rate_reserve"
+require "$src/docs/man/firtp.9" "\fBperiod_ns\fR ($period_ns)" "period_ns"
+require "$src/docs/man/firtp_tp.9" "\fBtolerance\fR ($tolerance)" "tolerance"
+require "$src/docs/man/firtp_tp.9" "\fBchord_tol\fR ($chord)" "chord_tol"
+require "$src/docs/man/firtp_tp.9" "\fBrate_reserve\fR ($reserve)" "rate_reserve"
+require "$src/docs/man/firtp.1" "tolerance $tolerance mm." "the built-in machine's tolerance"
+require "$src/docs/GUIDE.md" "\`ARC_CHORD_TOLERANCE\` (mm, $chord)" "ARC_CHORD_TOLERANCE"
+require "$src/docs/GUIDE.md" "\`RATE_RESERVE\` (0-1, $reserve:" "RATE_RESERVE"
+require "$src/docs/GUIDE.md" "(\`[FIRTP]RATE_RESERVE\`, default $reserve)" "RATE_RESERVE"
+require "$src/docs/GUIDE.md" "(\`[DISPLAY]MAX_FEED_OVERRIDE\`, default $override," "MAX_FEED_OVERRIDE"
+require "$src/docs/GUIDE.md" "smoothed at those limits, $tolerance mm." "the built-in machine's tolerance"
+[ "$fail" = 0 ] && echo "defaults: the man pages and the GUIDE state those of firtp/defaults.hpp"
+
 one=$(plain "$src/docs/man/firtp.1")
 for word in plan run serve host simulate record replay "EXIT STATUS" "--version"; do
   grep -qF -- "$word" <<< "$one" || { echo "FAIL: firtp.1 does not mention $word"; fail=1; }

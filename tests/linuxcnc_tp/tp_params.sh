@@ -6,6 +6,8 @@
 #   [TRAJ]MAX_LINEAR_JERK 20000, [AXIS_X/Y]MAX_JERK 30000   20000, 2 (the smallest; a message names 30000)
 #   the same with jerk=5000                                5000, 1 (the override)
 #   [AXIS_Y]MAX_JERK = fast                                the load is refused, naming file, line and key
+# and without settings the defaults of firtp/defaults.hpp; meaning=contour sets firtp_tp.contour,
+# meaning=max is refused.
 # Set-up: tests/linuxcnc/hal_session.sh.
 set -euo pipefail
 module=$1 moddir=$2
@@ -50,6 +52,20 @@ session_with "" "tolerance=0.02 t1=0.1" || { cat "$work/halrun.log"; echo "FAIL:
 expect "no INI" 100000 0
 [ "$(param firtp_tp.tolerance) $(param firtp_tp.t1) $(param firtp_tp.stages) $(param firtp_tp.queue)" = "0.02 0.1 2 1024" ] ||
   { cat "$work/halrun.log"; echo "FAIL: tolerance, t1, stages, queue"; exit 1; }
+
+defaults_h="$(cd "$(dirname "$0")/../.." && pwd)/component/core/include/firtp/defaults.hpp"
+default_text() { sed -nE "s/^#define FIRTP_DEFAULT_$1_TEXT \"(.*)\"$/\1/p" "$defaults_h"; }
+session_with "" "" || { cat "$work/halrun.log"; echo "FAIL: loadrt firtp_tp without settings"; exit 1; }
+shown="$(param firtp_tp.tolerance) $(param firtp_tp.chord-tol) $(param firtp_tp.rate-reserve) $(param firtp_tp.contour)"
+wanted="$(default_text TOLERANCE) $(default_text ARC_CHORD_TOLERANCE) $(default_text RATE_RESERVE) FALSE"
+[ "$shown" = "$wanted" ] || { cat "$work/halrun.log"; echo "FAIL: defaults $shown, expected $wanted (defaults.hpp)"; exit 1; }
+echo "defaults: tolerance, chord-tol, rate-reserve, contour $shown"
+session_with "" "meaning=contour" || { cat "$work/halrun.log"; echo "FAIL: loadrt firtp_tp meaning=contour"; exit 1; }
+[ "$(param firtp_tp.contour)" = TRUE ] || { cat "$work/halrun.log"; echo "FAIL: meaning=contour: contour not TRUE"; exit 1; }
+if session_with "" "meaning=max"; then cat "$work/halrun.log"; echo "FAIL: meaning=max was accepted"; exit 1; fi
+grep -qF "meaning must be corner or contour" "$work/halrun.log" ||
+  { cat "$work/halrun.log"; echo "FAIL: meaning=max: the refusal does not say why"; exit 1; }
+echo "meaning=contour: firtp_tp.contour TRUE; meaning=max: refused"
 
 session_with "$work/machine.ini" "" || { cat "$work/halrun.log"; echo "FAIL: loadrt firtp_tp with the INI"; exit 1; }
 expect "INI" 20000 2

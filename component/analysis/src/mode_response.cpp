@@ -53,7 +53,7 @@ Discretisation discretise(double w, double zeta, double h) {
     Discretisation d;
     d.phi = e.topLeftCorner<2, 2>();
     const double factorial[4] = {1.0, 1.0, 2.0, 6.0};
-    for (int c = 0; c < 4; ++c) d.gamma[static_cast<std::size_t>(c)] = factorial[c] * e.block<2, 1>(0, 2 + c);
+    for (int c = 0; c < 4; ++c) d.gamma[c] = factorial[c] * e.block<2, 1>(0, 2 + c);
     return d;
 }
 

@@ -113,11 +113,11 @@ std::vector<AxisState> plan_exact_stop_scurves(const MachineLimits& limits, doub
         for (int i = 0; i < limits.axes; ++i) {
             const double share = std::abs(u[i]);
             if (share < direction_floor) continue;
-            const AxisLimits& l = limits.axis[static_cast<std::size_t>(i)];
+            const AxisLimits& l = limits.axis[i];
             if (l.max_velocity > 0.0) v = std::min(v, l.max_velocity / share);
             if (!(l.max_acceleration > 0.0))
                 throw std::invalid_argument("line " + std::to_string(block.line) + ": axis " +
-                                            axis_letters[static_cast<std::size_t>(i)] +
+                                            axis_letters[i] +
                                             " moves without an acceleration limit");
             a = std::min(a, l.max_acceleration / share);
             if (l.max_jerk > 0.0) j = std::min(j, l.max_jerk / share);

@@ -34,7 +34,7 @@ std::vector<std::string> module_arguments(const MachineConfig& machine, const Ch
     std::vector<std::string> args{
         cat("axes=", std::to_string(machine.limits.axes)),
         cat("tolerance=", number_text(machine.default_tolerance)),
-        cat("meaning=", p.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner"),
+        cat("meaning=", to_string(p.tolerance_meaning)),
         cat("period_ns=", std::to_string(std::llround(p.period * 1e9))),
         cat("queue=", std::to_string(settings.queue)),
         cat("max_blocks=", std::to_string(settings.max_blocks)),

@@ -29,7 +29,7 @@ double braking_share(const BrakingPeaks& peaks, const MachineLimits& limits, con
     for (int a = 0; a < limits.axes && a < max_axes; ++a) {
         const double v = std::abs(velocity[a]);
         if (!(v > 0.0)) continue;
-        const AxisLimits& l = limits.axis[static_cast<std::size_t>(a)];
+        const AxisLimits& l = limits.axis[a];
         bound(l.max_velocity, v);
         bound(l.max_acceleration, v * peaks.acceleration);
         bound(l.max_jerk, v * peaks.jerk);

@@ -142,8 +142,8 @@ double solve_overlap(const CornerModel& corner, double epsilon, ToleranceMeaning
         };
         // The closed form holds while neither pulse ends inside the overlap.
         const double cap = std::min(Tk_max, short_pulse);
-        const double tk = bisect_overlap(error, epsilon, cap);
-        if (tk < cap || cap == Tk_max) return tk;
+        const double Tk = bisect_overlap(error, epsilon, cap);
+        if (Tk < cap || cap == Tk_max) return Tk;
     }
     if (meaning == ToleranceMeaning::corner_point)  // the phase maximum is found to ~1e-6: keep 1e-5 of eps
         return bisect_overlap([&](double Tk) { return corner.sampled_corner_error(Tk, period); },

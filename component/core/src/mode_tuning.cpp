@@ -146,9 +146,9 @@ TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, cons
         double td = 0.0;
         bool feasible = true;
         for (int item = 0; item < n && feasible; ++item) {
-            const double bound = bounds[static_cast<std::size_t>(order[static_cast<std::size_t>(item)])];
+            const double bound = bounds[order[item]];
             if (item < static_cast<int>(slots.size())) {
-                const double zero = slots[static_cast<std::size_t>(item)].zero_hz;
+                const double zero = slots[item].zero_hz;
                 const double t = raised(bound, zero);
                 feasible = !std::isnan(t);
                 if (!feasible && too_long.empty()) too_long = unraisable(bound, zero);
@@ -179,10 +179,10 @@ TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, cons
 
     std::array<TunedStage, max_stages> chosen{};
     for (int item = 0; item < n; ++item) {
-        const double bound = bounds[static_cast<std::size_t>(best_order[static_cast<std::size_t>(item)])];
-        TunedStage& s = chosen[static_cast<std::size_t>(item)];
+        const double bound = bounds[best_order[item]];
+        TunedStage& s = chosen[item];
         if (item < static_cast<int>(slots.size())) {
-            const Slot& slot = slots[static_cast<std::size_t>(item)];
+            const Slot& slot = slots[item];
             s.time = raised(bound, slot.zero_hz, &s.k);
             s.mode = slot.mode;
             s.zero_hz = slot.zero_hz;
@@ -195,7 +195,7 @@ TunedFilters tune_filters(std::span<const double> lower_bounds, int stages, cons
                      [](const TunedStage& a, const TunedStage& b) { return a.time > b.time; });
     result.stages = chosen;
     result.filters.stages = n;
-    for (int i = 0; i < n; ++i) result.filters.T[static_cast<std::size_t>(i)] = chosen[static_cast<std::size_t>(i)].time;
+    for (int i = 0; i < n; ++i) result.filters.T[i] = chosen[i].time;
     return result;
 }
 
@@ -208,7 +208,7 @@ TunedFilters tune_filter_times(const MachineLimits& limits, int stages, std::spa
 double chain_magnitude(const FilterTimes& filters, double frequency_hz) {
     double m = 1.0;
     for (int i = 0; i < filters.stages; ++i) {
-        const double x = std::numbers::pi * frequency_hz * filters.T[static_cast<std::size_t>(i)];
+        const double x = std::numbers::pi * frequency_hz * filters.T[i];
         m *= x == 0.0 ? 1.0 : std::abs(std::sin(x) / x);
     }
     return m;
@@ -229,7 +229,7 @@ double stage_residual_vibration(double T, double frequency_hz, double damping) {
 double residual_vibration(const FilterTimes& filters, double frequency_hz, double damping) {
     double v = 1.0;
     for (int i = 0; i < filters.stages; ++i)
-        v *= stage_residual_vibration(filters.T[static_cast<std::size_t>(i)], frequency_hz, damping);
+        v *= stage_residual_vibration(filters.T[i], frequency_hz, damping);
     return v;
 }
 

@@ -67,12 +67,12 @@ bool PaperPlanner::take_report(CornerReport& report) {
     return true;
 }
 
-PaperPlanner::Start PaperPlanner::schedule(double tk, std::int64_t now, bool rest) const {
+PaperPlanner::Start PaperPlanner::schedule(double Tk, std::int64_t now, bool rest) const {
     // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
     const double period = parameters_.period;
-    Start s{last_.end_tick, last_.end_offset + (chain_->delay() - tk), tk};
+    Start s{last_.end_tick, last_.end_offset + (chain_->delay() - Tk), Tk};
     normalise(s.tick, s.offset, period);
-    if (tk == 0.0 && (rest || s.offset > 0.0)) {
+    if (Tk == 0.0 && (rest || s.offset > 0.0)) {
         // A stop: rest until the next servo sample so that one sample lands exactly on the
         // corner; otherwise the straight line between samples would cut it. A blended corner
         // that needs a stop rests at least one period (until a sample after it): then a sample
@@ -176,22 +176,22 @@ std::optional<double> PaperPlanner::feed_for_start(const AxisVector& delta, doub
 std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta, double length, double feed,
                                                           double beta, double epsilon, const Block& block) {
     const std::int64_t now = timeline_->now();
-    const double tk_high = latest_overlap(now);
+    const double Tk_high = latest_overlap(now);
     const double slowest = length / longest_pulse(parameters_.period);
-    auto ok = [&](double tk, double f) {
-        return feasible(candidate(delta, length, f, schedule(tk, now, tk == 0.0), block), last_.end, epsilon, true);
+    auto ok = [&](double Tk, double f) {
+        return feasible(candidate(delta, length, f, schedule(Tk, now, Tk == 0.0), block), last_.end, epsilon, true);
     };
     constexpr int steps = 14;
-    const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, tk_high);
-    if ((estimate >= tk_high || beta < shallow) && ok(tk_high, feed)) return Choice{tk_high, feed};
-    if (beta < shallow && ok(tk_high, feed * min_feed_fraction)) {
-        const auto full = highest_feasible_feed([&](double f) { return ok(tk_high, f); }, feed, steps, slowest);
-        return Choice{tk_high, full.value_or(feed * min_feed_fraction)};
+    const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, Tk_high);
+    if ((estimate >= Tk_high || beta < shallow) && ok(Tk_high, feed)) return Choice{Tk_high, feed};
+    if (beta < shallow && ok(Tk_high, feed * min_feed_fraction)) {
+        const auto full = highest_feasible_feed([&](double f) { return ok(Tk_high, f); }, feed, steps, slowest);
+        return Choice{Tk_high, full.value_or(feed * min_feed_fraction)};
     }
     // Bracket below the estimate, then bisect.
-    double lo = 0.0, hi = tk_high;
+    double lo = 0.0, hi = Tk_high;
     if (estimate > 0.0) {
-        if (estimate < tk_high && ok(estimate, feed)) lo = estimate;
+        if (estimate < Tk_high && ok(estimate, feed)) lo = estimate;
         else if (hi = std::min(hi, estimate), ok(estimate * (15.0 / 16.0), feed)) lo = estimate * (15.0 / 16.0);
     }
     if (lo > 0.0 || ok(0.0, feed)) {
@@ -241,7 +241,7 @@ Result PaperPlanner::add(const Block& block) {
         report.epsilon = last_.tolerance;
         report.exact_stop = last_.termination == Termination::exact_stop;
         const bool in_window = parameters_.fixed_overlap < 0.0 && (last_.run_tv < td || tv < td || check_limits_);
-        double tk = 0.0;
+        double Tk = 0.0;
         if (report.exact_stop) {
             if (check_limits_) {  // after a stop only the feed can keep the limits
                 const std::optional<double> f = feed_for_start(delta, length, feed, schedule(0.0, now), block);
@@ -252,45 +252,45 @@ Result PaperPlanner::add(const Block& block) {
         } else if (in_window) {
             const std::optional<Choice> choice = search(delta, length, feed, beta, last_.tolerance, block);
             if (!choice) return refuse();
-            tk = choice->tk;
+            Tk = choice->Tk;
             feed = choice->feed;
             tv = length / feed;
-            report.tk_tolerance = tk;
+            report.Tk_tolerance = Tk;
         } else {
             // Equal feed, straight on, and the previous corner's overlap inside the last block: one pulse.
             joined = beta < collinear_angle && std::abs(block.feed - last_.feed) <= 1e-12 * last_.feed &&
-                     last_.run_tv >= last_.tk_in + period;
+                     last_.run_tv >= last_.Tk_in + period;
             // Clamp (paper notes): this corner gets what the previous one left of the incoming
             // pulse, and at most half of the outgoing one, so no window holds three blocks. One
             // servo period more stays free: the sampled error bound looks that far past a window.
-            const double tk_max = joined ? td : std::clamp(
-                std::min({td, last_.run_tv + td - last_.tk_in - period, 0.5 * (tv + td - period)}), 0.0, td);
+            const double Tk_max = joined ? td : std::clamp(
+                std::min({td, last_.run_tv + td - last_.Tk_in - period, 0.5 * (tv + td - period)}), 0.0, td);
             const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
             if (joined) {
-                tk = td;
+                Tk = td;
             } else if (parameters_.fixed_overlap >= 0.0) {
-                tk = std::min(parameters_.fixed_overlap, tk_max);
-                report.tk_tolerance = parameters_.fixed_overlap;
+                Tk = std::min(parameters_.fixed_overlap, Tk_max);
+                report.Tk_tolerance = parameters_.fixed_overlap;
             } else {
-                tk = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, tk_max);
-                report.tk_tolerance = tk;
-                if (tk == tk_max && tk_max < td)  // report-only: what the clamp took away
-                    report.tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
+                Tk = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, Tk_max);
+                report.Tk_tolerance = Tk;
+                if (Tk == Tk_max && Tk_max < td)  // report-only: what the clamp took away
+                    report.Tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
             }
         }
-        start = schedule(tk, now, tk == 0.0 && !report.exact_stop);
-        joined = joined && start.tk == td;
-        report.tk = start.tk;
+        start = schedule(Tk, now, Tk == 0.0 && !report.exact_stop);
+        joined = joined && start.Tk == td;
+        report.Tk = start.Tk;
         if (!joined && !report.exact_stop) {  // report-only
             const CornerModel model{chain_, last_.run_delta, last_.run_tv, delta, tv};
             report.predicted_error = parameters_.tolerance_meaning == ToleranceMeaning::contour
-                                         ? model.contour_error(start.tk)
-                                         : model.corner_error(start.tk);
+                                         ? model.contour_error(start.Tk)
+                                         : model.corner_error(start.Tk);
         }
         report.speed_in = last_.feed;
         report.speed_out = feed;
         report.bound = report.exact_stop ? CornerBound::stop
-                       : start.tk >= td  ? CornerBound::feed
+                       : start.Tk >= td  ? CornerBound::feed
                                          : CornerBound::tolerance;
     }
 
@@ -313,11 +313,11 @@ Result PaperPlanner::add(const Block& block) {
     if (joined) {
         next.run_delta = last_.run_delta + delta;
         next.run_tv = last_.run_tv + tv;
-        next.tk_in = last_.tk_in;
+        next.Tk_in = last_.Tk_in;
     } else {
         next.run_delta = delta;
         next.run_tv = tv;
-        next.tk_in = start.tk;
+        next.Tk_in = start.Tk;
     }
     const bool formed_corner = last_.moving;
     if (formed_corner && !joined && !report.exact_stop && std::isfinite(last_.tolerance)) {

@@ -11,6 +11,16 @@
 
 namespace firtp {
 
+std::optional<ToleranceMeaning> parse_tolerance_meaning(std::string_view word) {
+    if (word == "corner") return ToleranceMeaning::corner_point;
+    if (word == "contour") return ToleranceMeaning::contour;
+    return std::nullopt;
+}
+
+const char* to_string(ToleranceMeaning meaning) {
+    return meaning == ToleranceMeaning::contour ? "contour" : "corner";
+}
+
 double FilterTimes::delay() const {
     double td = 0.0;
     for (int i = 0; i < stages; ++i) td += T[i];
@@ -69,11 +79,11 @@ FilterTimes filter_times_from_limits(const MachineLimits& limits, int stages,
     FilterTimes f;
     f.stages = stages;
     for (int i = 0; i < stages; ++i) {
-        const double t = times[static_cast<std::size_t>(i)];
+        const double t = times[i];
         if (!(t > 0.0) || !std::isfinite(t))
             throw std::invalid_argument("T" + std::to_string(i + 1) +
                                         " is neither given nor derivable from the axis limits or a mode");
-        f.T[static_cast<std::size_t>(i)] = t;
+        f.T[i] = t;
     }
     std::sort(f.T.begin(), f.T.begin() + stages, std::greater<>());
     return f;
@@ -104,7 +114,7 @@ double hold_time_bound(const PlannerParameters& parameters) {
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance) {
     constexpr double shrink_share = 0.9;
     double squares = 0.0;
-    for (int i = 0; i < filters.stages; ++i) squares += filters.T[static_cast<std::size_t>(i)] * filters.T[static_cast<std::size_t>(i)];
+    for (int i = 0; i < filters.stages; ++i) squares += filters.T[i] * filters.T[i];
     if (!(squares > 0.0) || !(radius > 0.0) || !std::isfinite(tolerance) || !(tolerance > 0.0))
         return std::numeric_limits<double>::infinity();
     return std::sqrt(24.0 * radius * shrink_share * tolerance / squares);

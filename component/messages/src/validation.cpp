@@ -22,7 +22,7 @@ std::string text(double value) {
 void check_target(const firtp_lcm::block_t& message, std::vector<std::string>& problems) {
     for (int axis = 0; axis < max_axes; ++axis) {
         const double value = message.target[axis];
-        const std::string name = std::string("target ") + axis_letters[static_cast<std::size_t>(axis)];
+        const std::string name = std::string("target ") + axis_letters[axis];
         if (!std::isfinite(value))
             problems.push_back(name + " is " + text(value));
         else if (std::abs(value) > max_coordinate)

@@ -167,7 +167,7 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
         return fail(line, too_many_blocks());
     for (Eigen::Index a = machine_.limits.axes; a < max_axes; ++a)
         if (std::abs(target[a] - position_[a]) > zero_length)
-            return fail(line, cat("the move turns axis ", std::string(1, axis_letters[static_cast<std::size_t>(a)]),
+            return fail(line, cat("the move turns axis ", std::string(1, axis_letters[a]),
                                   " but the machine has ", std::to_string(machine_.limits.axes), " axes"));
     Block block;
     block.target = target;

@@ -78,11 +78,11 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
     if (const auto v = positive(ini, "TRAJ", "MAX_LINEAR_JERK", true)) linear_jerk = *v;
     bool own_jerk[max_axes] = {};  // [AXIS_L]MAX_JERK given
     for (int i = 0; i < max_axes; ++i) {
-        const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(i)];
+        const std::string section = std::string("AXIS_") + axis_letters[i];
         if (ini.section(section).empty()) continue;
         check_axis_keys(ini, section);
         m.limits.axes = std::max(m.limits.axes, i + 1);
-        AxisLimits& axis = m.limits.axis[static_cast<std::size_t>(i)];
+        AxisLimits& axis = m.limits.axis[i];
         if (const auto v = positive(ini, section, "MAX_VELOCITY")) axis.max_velocity = *v;
         if (const auto v = positive(ini, section, "MAX_ACCELERATION")) axis.max_acceleration = *v;
         if (const auto v = positive(ini, section, "MAX_JERK", true)) axis.max_jerk = *v, own_jerk[i] = true;  // 0 = not limited
@@ -91,9 +91,9 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
     // firtp and firtp_tp (tp_ini.cpp): every linear axis at most that (0: not set).
     if (linear_jerk > 0.0)
         for (int i = 0; i < m.limits.axes; ++i) {
-            const char letter = axis_letters[static_cast<std::size_t>(i)];
+            const char letter = axis_letters[i];
             if (letter == 'A' || letter == 'B' || letter == 'C') continue;
-            double& jerk = m.limits.axis[static_cast<std::size_t>(i)].max_jerk;
+            double& jerk = m.limits.axis[i].max_jerk;
             jerk = own_jerk[i] && jerk > 0.0 ? std::min(jerk, linear_jerk) : linear_jerk;
         }
 }
@@ -151,9 +151,9 @@ void read_firtp(const IniFile& ini, MachineConfig& m) {
     if (const IniFile::Entry* e = ini.find("FIRTP", "TOLERANCE_MEANING")) {
         std::string v = e->value;
         std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (v == "corner") m.tolerance_meaning = ToleranceMeaning::corner_point;
-        else if (v == "contour") m.tolerance_meaning = ToleranceMeaning::contour;
-        else fail(ini, *e, cat("'", e->value, "' must be corner or contour"));
+        const std::optional<ToleranceMeaning> meaning = parse_tolerance_meaning(v);
+        if (!meaning) fail(ini, *e, cat("'", e->value, "' must be corner or contour"));
+        m.tolerance_meaning = *meaning;
     }
 }
 
@@ -191,9 +191,9 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
         double AxisLimits::*num = velocity_over_acceleration ? &AxisLimits::max_velocity : &AxisLimits::max_acceleration;
         double AxisLimits::*den = velocity_over_acceleration ? &AxisLimits::max_acceleration : &AxisLimits::max_jerk;
         for (int a = 0; a < m.limits.axes && t[longest] > 0.0; ++a) {
-            const AxisLimits& l = m.limits.axis[static_cast<std::size_t>(a)];
+            const AxisLimits& l = m.limits.axis[a];
             if (!(l.*num > 0.0 && l.*den > 0.0 && l.*num / l.*den == t[longest])) continue;
-            const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
+            const std::string section = std::string("AXIS_") + axis_letters[a];
             const char* den_key = velocity_over_acceleration ? "MAX_ACCELERATION" : "MAX_JERK";
             const char* num_key = velocity_over_acceleration ? "MAX_VELOCITY" : "MAX_ACCELERATION";
             const std::string why = cat(text, ": ", stage, " = ", num_key, " / ", den_key, " = ", short_number(t[longest]), " s");
@@ -231,8 +231,8 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
 void check_accelerations(const IniFile& ini, const MachineConfig& m) {
     bool any = false;
     for (int a = 0; a < m.limits.axes; ++a) {
-        const std::string section = std::string("AXIS_") + axis_letters[static_cast<std::size_t>(a)];
-        const bool given = m.limits.axis[static_cast<std::size_t>(a)].max_acceleration > 0.0;
+        const std::string section = std::string("AXIS_") + axis_letters[a];
+        const bool given = m.limits.axis[a].max_acceleration > 0.0;
         any = any || given;
         if (given || ini.section(section).empty()) continue;
         throw ConfigError(cat(ini.file_name(), ":", std::to_string(ini.section(section).front()->line), ": [", section,
@@ -270,7 +270,7 @@ TunedFilters MachineConfig::tuned_filters() const {
             TunedFilters untuned;
             untuned.filters = filter_times_from_limits(limits, stages, given_times, {});
             for (int i = 0; i < untuned.filters.stages; ++i)
-                untuned.stages[static_cast<std::size_t>(i)].time = untuned.filters.T[static_cast<std::size_t>(i)];
+                untuned.stages[i].time = untuned.filters.T[i];
             return untuned;
         }
         return tune_filter_times(limits, stages, given_times, tuning);
@@ -296,15 +296,10 @@ PlannerParameters MachineConfig::planner_parameters() const {
 }
 
 MachineConfig default_machine() {
-    MachineConfig m;
-    m.period = 0.001;
+    MachineConfig m;  // the period, stages, tolerance and arc chords as MachineConfig's defaults
     m.limits.axes = 3;
     m.limits.max_linear_velocity = 0.0;
     for (std::size_t i = 0; i < 3; ++i) m.limits.axis[i] = AxisLimits{300.0, 5000.0, 100000.0};
-    m.stages = 2;
-    m.default_tolerance = 0.05;
-    m.tolerance_meaning = ToleranceMeaning::corner_point;
-    m.arc_chord_tolerance = 0.001;
     return m;
 }
 

@@ -32,7 +32,7 @@ double speed_cap(const AxisVector& delta, double path, bool linear, const Machin
     double cap = std::numeric_limits<double>::infinity();
     if (linear && limits.max_linear_velocity > 0.0) cap = limits.max_linear_velocity;
     for (int a = 0; a < std::min(limits.axes, max_axes); ++a) {
-        const double v = limits.axis[static_cast<std::size_t>(a)].max_velocity;
+        const double v = limits.axis[a].max_velocity;
         const double d = std::abs(delta[a]);
         if (d > 0.0 && v > 0.0) cap = std::min(cap, v * path / d);
     }

@@ -7,6 +7,7 @@
 // The handoff to the servo thread is the lock-free hal_stream; nothing here blocks it.
 #pragma once
 
+#include <firtp/defaults.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/types.hpp>
 
@@ -20,7 +21,7 @@ struct BridgeOptions {
     int block_key = 0x46495242;       // the component's block_key
     int state_key = 0x46495253;       // the component's state_key (0: no axis states)
     int axes = 3;
-    double period = 0.001;            // servo period, s
+    double period = defaults::servo_period;  // servo period, s
     bool every_period = true;         // publish FIRTP_AXIS_STATE for every period
     int live_decimation = 20;         // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
     int status_every = 10;            // FIRTP_STATUS every N periods, and on every change

@@ -45,7 +45,7 @@ private:
         AxisVector end = AxisVector::Zero();
         AxisVector run_delta = AxisVector::Zero();  // incoming pulse: this block and collinear ones joined to it
         double run_tv = 0.0;
-        double tk_in = 0.0;                         // overlap at the corner where the run started
+        double Tk_in = 0.0;                         // overlap at the corner where the run started
         double feed = 0.0;
         Termination termination = Termination::exact_stop;
         double tolerance = 0.0;
@@ -56,10 +56,10 @@ private:
     struct Start {
         std::int64_t tick;
         double offset;
-        double tk;  // the overlap this start gives (less than asked when the block came late)
+        double Tk;  // the overlap this start gives (less than asked when the block came late)
     };
     struct Choice {
-        double tk;
+        double Tk;
         double feed;
     };
     // A corner the next pulses may still move: its point, tolerance, the leg ending at it (counted
@@ -72,7 +72,7 @@ private:
         double guess;       // where its closest approach is expected, likewise
     };
 
-    Start schedule(double tk, std::int64_t now, bool rest = false) const;  // rest: a blended corner's stop
+    Start schedule(double Tk, std::int64_t now, bool rest = false) const;  // rest: a blended corner's stop
     double latest_overlap(std::int64_t now) const;
     Leg candidate(const AxisVector& delta, double length, double feed, const Start& start, const Block& block) const;
     // True when the candidate keeps the limits and every corner it can move (with nothing after it).

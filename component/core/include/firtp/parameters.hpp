@@ -1,9 +1,13 @@
 // Settings of the FIR chain and the planner (Sencer et al. 2015).
 #pragma once
 
+#include <firtp/defaults.hpp>
+
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string_view>
 
 namespace firtp {
 
@@ -22,6 +26,10 @@ enum class ToleranceMeaning {
     corner_point,  // closest approach of the tool to the programmed corner point (the paper's)
     contour,       // largest distance from the programmed path
 };
+
+// The words INI files, the CLI and the modules use: "corner" or "contour" (exactly); nullopt otherwise.
+std::optional<ToleranceMeaning> parse_tolerance_meaning(std::string_view word);
+const char* to_string(ToleranceMeaning meaning);
 
 struct AxisLimits {
     double max_velocity = 0.0;      // units/s
@@ -42,13 +50,13 @@ struct PlannerParameters {
     // `filters` is not used.
     bool fixed_chain = false;
     FilterTimes filters;
-    double period = 0.001;  // servo period, s
+    double period = defaults::servo_period;  // servo period, s
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;
     double fixed_overlap = -1.0;        // Tk forced at every blended corner (s); < 0: from the tolerance
     std::size_t queue_capacity = 256;   // blocks the interpolator holds at once
     MachineLimits limits;               // held at every sample, overlaps included (0 = not limited)
-    double max_rate = 1.0;              // highest feed override (MAX_FEED_OVERRIDE): limits hold up to it
-    double rate_reserve = 0.2;          // the paper's mode: share of a and j kept for its clock's rate ramps
+    double max_rate = defaults::max_feed_override;  // highest feed override (MAX_FEED_OVERRIDE): limits hold up to it
+    double rate_reserve = defaults::rate_reserve;  // the paper's mode: share of a and j kept for its clock's rate ramps
     // From rest, the first step waits at most this long (s) for the look-ahead to settle it.
     double start_wait = 0.05;
 };

@@ -31,8 +31,8 @@ struct CornerReport {
     CornerBound bound = CornerBound::feed;
     int axis = -1;                          // the most loaded axis of the corner step (tolerance, room)
     // The paper's mode only: overlap used and what the tolerance alone allows.
-    double tk = 0.0;
-    double tk_tolerance = 0.0;
+    double Tk = 0.0;
+    double Tk_tolerance = 0.0;
 };
 
 // Counts since construction.

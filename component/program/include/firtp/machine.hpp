@@ -14,23 +14,19 @@
 
 namespace firtp {
 
-// Blocks a program may expand to (an arc: one a chord) unless [FIRTP]MAX_PROGRAM_BLOCKS says
-// otherwise: 10x the 10^6-block programs the benchmarks plan. 112 bytes a block: 1.1 GB, 1.8 GB
-// peak (measured) while the vector grows.
-constexpr std::size_t default_max_program_blocks = 10'000'000;
-
+// Every default below is firtp/defaults.hpp's.
 struct MachineConfig {
-    double period = 0.001;                  // [EMCMOT]SERVO_PERIOD (ns in the INI)
+    double period = defaults::servo_period;  // [EMCMOT]SERVO_PERIOD (ns in the INI)
     MachineLimits limits;                   // [TRAJ]MAX_LINEAR_VELOCITY, [AXIS_<L>]MAX_VELOCITY/ACCELERATION/JERK
     int stages = 2;                         // [FIRTP]STAGES
     std::vector<double> given_times;        // [FIRTP]T1..T4 in s (0 = derive from limits)
     ModeTuning tuning;                      // [FIRTP]MODES (Hz[/damping], X: for one axis) and ROBUST
-    double default_tolerance = 0.05;        // [FIRTP]TOLERANCE, used by G64 without P
+    double default_tolerance = defaults::tolerance;  // [FIRTP]TOLERANCE, used by G64 without P
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // [FIRTP]TOLERANCE_MEANING corner|contour
-    double arc_chord_tolerance = 0.001;     // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
-    double max_feed_override = 1.0;         // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
-    double rate_reserve = 0.2;              // [FIRTP]RATE_RESERVE: fixed chain: share of a and j kept for override ramps
-    std::size_t max_program_blocks = default_max_program_blocks;  // [FIRTP]MAX_PROGRAM_BLOCKS (whole, >= 1)
+    double arc_chord_tolerance = defaults::arc_chord_tolerance;  // [FIRTP]ARC_CHORD_TOLERANCE, mm: largest sagitta of an arc's chords
+    double max_feed_override = defaults::max_feed_override;  // [DISPLAY]MAX_FEED_OVERRIDE: limits hold up to this feed scale
+    double rate_reserve = defaults::rate_reserve;  // [FIRTP]RATE_RESERVE: fixed chain: share of a and j kept for override ramps
+    std::size_t max_program_blocks = defaults::max_program_blocks;  // [FIRTP]MAX_PROGRAM_BLOCKS (whole, >= 1)
     // For LinuxCNC's interpreter (gcode.hpp): the INI it reads ([RS274NGC] SUBROUTINE_PATH,
     // startup codes, ...), [RS274NGC]PARAMETER_FILE and [EMCIO]TOOL_TABLE, the last two relative
     // to the INI's folder as LinuxCNC (started there) reads them. Empty: none.
@@ -48,8 +44,8 @@ struct MachineConfig {
 };
 
 // Built-in machine used when no INI is given: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3,
-// 1 ms servo period, every move smoothed at those limits (no T1: not the paper's fixed chain),
-// 0.05 mm tolerance, 0.001 mm arc chords.
+// the default servo period, every move smoothed at those limits (no T1: not the paper's fixed
+// chain), the default tolerance and arc chords (firtp/defaults.hpp).
 MachineConfig default_machine();
 
 // Reads the keys above over default_machine(). [TRAJ]LINEAR_UNITS must be mm (or absent): firtp
