@@ -17,8 +17,8 @@ namespace firtp {
 
 struct BridgeOptions {
     const char* name = "firtp-bridge";  // HAL component name and pin prefix (pin_pairs() name the default)
-    int block_key = 0x46495242;       // the component's block_key
-    int state_key = 0x46495253;       // the component's state_key (0: no axis states)
+    int block_key = firtp_lcm::config_t::BLOCK_STREAM_KEY;  // the component's block_key
+    int state_key = firtp_lcm::config_t::STATE_STREAM_KEY;  // the component's state_key (0: no axis states)
     int axes = 3;
     double period = 0.001;            // servo period, s
     bool every_period = true;         // publish FIRTP_AXIS_STATE for every period
