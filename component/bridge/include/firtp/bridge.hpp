@@ -22,8 +22,8 @@ struct BridgeOptions {
     int axes = 3;
     double period = 0.001;            // servo period, s
     bool every_period = true;         // publish FIRTP_AXIS_STATE for every period
-    int live_decimation = 20;         // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
-    int status_every = 10;            // FIRTP_STATUS every N periods, and on every change
+    int live_decimation = messages::default_live_decimation;  // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
+    int status_every = messages::default_status_every;        // FIRTP_STATUS every N periods, and on every change
     double max_feed_scale = 2.0;
 };
 

@@ -26,6 +26,11 @@ inline constexpr const char* axis_state_live_channel = "FIRTP_AXIS_STATE_LIVE"; 
 inline constexpr const char* control_channel = "FIRTP_CONTROL";
 inline constexpr const char* config_channel = "FIRTP_CONFIG";  // machine and settings (config_t)
 
+// How often the component side publishes, by default (every bridge): FIRTP_AXIS_STATE_LIVE every
+// N servo periods, FIRTP_STATUS every N periods and on every change.
+inline constexpr int default_live_decimation = 20;
+inline constexpr int default_status_every = 10;
+
 // LCM's default multicast group with ttl=0 (this host only) and an 8 MiB receive buffer.
 std::string default_url();
 
