@@ -7,6 +7,7 @@
 #include "number_text.hpp"
 #include "record_config.hpp"
 #include "replay_compare.hpp"
+#include "replay_feed.hpp"
 #include "replay_log.hpp"
 
 #include <firtp/messages.hpp>
@@ -26,13 +27,9 @@ namespace {
 
 namespace po = boost::program_options;
 
-// When the blocks arrived (the transport's timing) can change the look-ahead's rounding: up to
-// 9e-12 relative measured (1.1e-8 on 1257 mm/s^2, tests/replay/record_stream.sh; docs/RECORDING.md).
-constexpr double default_replay_tolerance = 1e-9;
-
 struct ReplayOptions {
     std::filesystem::path log;
-    double tolerance = default_replay_tolerance;  // relative (replay_compare.hpp); 0: bit for bit
+    double tolerance = 0.0;                       // relative (replay_compare.hpp); 0: bit for bit
     std::optional<std::filesystem::path> ini;     // another machine than the logged one
     std::optional<std::filesystem::path> module;  // firtp.so
     bool help = false;
@@ -42,8 +39,8 @@ po::options_description replay_flags() {
     po::options_description d("Options", 100, 50);
     d.add_options()("help,h", "show this help and exit")(
         "tolerance", po::value<double>()->value_name("X"),
-        "equal: every position, velocity and acceleration within X times max(1, |recorded value|) (1e-9: rounding "
-        "differences from when blocks arrived are equal; 0: bit for bit)")(
+        "equal: every position, velocity and acceleration within X times max(1, |recorded value|) (default 0: bit "
+        "for bit)")(
         "ini", po::value<std::string>()->value_name("FILE"),
         "run this machine instead of the logged one (for logs without FIRTP_CONFIG, or to see what an INI change does)")(
         "module", po::value<std::string>()->value_name("firtp.so"),
@@ -68,12 +65,10 @@ std::string replay_help() {
     std::ostringstream text;
     text << "Usage: firtp replay LOG.lcmlog [options]\n\n"
             "Runs the component again on a log recorded by `firtp record` (or `firtp run --lcm-log`): builds it\n"
-            "from the log's FIRTP_CONFIG (machine and settings), feeds it the logged FIRTP_BLOCK and FIRTP_CONTROL\n"
-            "messages at the servo periods they arrived in, stepped one period at a time, and compares its axis\n"
-            "states with the logged FIRTP_AXIS_STATE, printing where they first differ. Where the recording's\n"
-            "component was short of planning time (its servo thread's budget cut how many blocks it took in a\n"
-            "period), the replay, which plans without that limit, can differ: the log does not say which\n"
-            "period took which block.\n\n"
+            "from the log's FIRTP_CONFIG (machine and settings), steps it one servo period at a time, feeds it\n"
+            "each logged FIRTP_BLOCK in the period the recorded component took it (each FIRTP_AXIS_STATE says so)\n"
+            "and each FIRTP_CONTROL before the period of the next logged axis state, and compares its axis states\n"
+            "with the logged ones, one to one, printing where they first differ.\n\n"
          << replay_flags()
          << "\nExit status: 0 equal; 1 bad input (unreadable or incomplete log, no machine); 2 bad command line;\n"
             "4 the replayed axis states differ from the recorded ones.\n";
@@ -121,8 +116,8 @@ void print_difference(std::ostream& out, const StateDifference& d, const LoggedR
         << run.state_events[i] << ", tick " << r.tick << ", t = " << number_text(r.time) << " s, line " << r.line << ")";
     if (d.replayed < replayed.size()) out << ", replayed state " << d.replayed << " (tick " << replayed[d.replayed].tick << ")";
     out << ":\n  ";
-    if (d.what == "motion")
-        out << "the recording moves, the replay " << (d.replayed + 1 >= replayed.size() ? "ended" : "stays at rest") << "\n";
+    if (d.what == "missing")
+        out << "the replay ended after " << replayed.size() << " states\n";
     else if (d.axis >= 0)
         out << d.what << " " << axis_names[d.axis] << ": recorded " << number_text(d.recorded_value) << ", replayed "
             << number_text(d.replayed_value) << " (difference " << number_text(d.replayed_value - d.recorded_value)
@@ -170,24 +165,19 @@ int replay_command(std::span<const std::string> args) {
         }
     };
 
-    // Inputs go in before the period of the first axis state logged after them.
+    // Each input before the period the recording took it in (replay_feed.hpp).
+    const FeedSchedule schedule = feed_schedule(run);
+    const auto publish = [&](const std::vector<const LoggedEvent*>& inputs) {
+        for (const LoggedEvent* e : inputs) lcm->publish(e->channel, e->data.data(), static_cast<unsigned>(e->data.size()));
+    };
     Progress progress(run.states.size());
     const std::int64_t first_tick = run.states.front().tick;
     std::int64_t periods = 0;
-    for (const LoggedEvent& e : run.events) {
-        if (e.kind == LoggedEvent::Kind::input) {
-            lcm->publish(e.channel, e.data.data(), static_cast<unsigned>(e.data.size()));
-            continue;
-        }
-        const std::int64_t wanted = run.states[e.state].tick - first_tick + 1;
-        while (periods < wanted) {
-            period();
-            ++periods;
-        }
-        progress.update(e.state);
+    for (std::size_t i = 0; i < run.states.size(); ++i) {
+        publish(schedule.before[i]);
+        for (const std::int64_t wanted = run.states[i].tick - first_tick + 1; periods < wanted; ++periods) period();
+        progress.update(i);
     }
-    // A few periods more: a motion that starts a period later than recorded is still compared.
-    for (int extra = 0; extra < 10; ++extra, ++periods) period();
     progress.done();
     if (collector.problem) throw std::runtime_error(*collector.problem);
 
@@ -196,17 +186,12 @@ int replay_command(std::span<const std::string> args) {
               << "machine      " << component.description << "\n"
               << "log          " << run.blocks << " blocks, " << run.controls << " controls, " << run.states.size()
               << " axis states\n"
+              << "fed          " << schedule.placed_by_state << " blocks in the periods the axis states name\n"
               << "replayed     " << collector.states.size() << " axis states in " << periods << " servo periods\n"
               << "compared     " << c.compared << " states, largest difference " << number_text(c.largest)
               << " (tolerance " << (options.tolerance > 0.0 ? number_text(options.tolerance) + " relative" : "0, bit for bit")
               << ")"
               << "\n";
-    if (run.config && !options.ini)
-        if (const firtp_lcm::status_t* s = fell_behind(run, *run.config))
-            std::cout << "note         the recorded component fell behind its block stream at tick " << s->tick
-                      << " (status seq " << s->seq << ": " << run.config->queue << "-block queue not full, blocks "
-                      << "waiting): it planned more slowly than blocks came, within its planning budget, so its motion "
-                         "from there depends on the machine's timing, which a replay does not reproduce\n";
     if (!c.first) {
         std::cout << "result       equal" << std::endl;
         return 0;

@@ -65,6 +65,8 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
             if (channel == messages::block_channel) {
                 const auto block = intact<firtp_lcm::block_t>(log, *event);
                 programs[block.program].insert(block.seq);
+                e.program = block.program;
+                e.seq = block.seq;
                 ++run.blocks;
             } else {
                 (void)intact<firtp_lcm::control_t>(log, *event);
@@ -90,17 +92,6 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
     check_blocks(log, programs);
     check_states(log, run);
     return run;
-}
-
-const firtp_lcm::status_t* fell_behind(const LoggedRun& run, const firtp_lcm::config_t& config, int margin) {
-    bool was_full = false;
-    for (const firtp_lcm::status_t& s : run.statuses) {
-        const std::int64_t waiting = std::int64_t{config.stream_depth} - 1 - s.queue_free;
-        const std::int64_t held = s.queue_depth - waiting;
-        if (held >= config.queue) was_full = true;
-        else if (was_full && waiting > 0 && held <= config.queue - margin) return &s;
-    }
-    return nullptr;
 }
 
 }  // namespace firtp::cli

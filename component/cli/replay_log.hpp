@@ -18,6 +18,7 @@ struct LoggedEvent {
     std::int64_t eventnum = 0;
     std::string channel;                     // input: FIRTP_BLOCK or FIRTP_CONTROL
     std::vector<std::uint8_t> data;          // input: the bytes as logged (sealed)
+    std::int64_t program = 0, seq = 0;       // input on FIRTP_BLOCK: the block's
     std::size_t state = 0;                   // state: index into LoggedRun::states
 };
 
@@ -33,11 +34,5 @@ struct LoggedRun {
 // Throws std::runtime_error naming the log and the event: unreadable, a corrupted message, axis
 // states missing (seq gaps), a program whose blocks do not start at seq 1 or have gaps.
 LoggedRun read_logged_run(const std::filesystem::path& log);
-
-// The first status after the component's queue was full in which it held `margin` or more blocks
-// fewer than its queue while blocks waited in its stream: it was planning more slowly than the
-// blocks came (its planning budget), so its motion from there depends on its timing. The status
-// gives queue_depth = component + stream and queue_free = stream_depth - 1 - stream.
-const firtp_lcm::status_t* fell_behind(const LoggedRun& run, const firtp_lcm::config_t& config, int margin = 8);
 
 }  // namespace firtp::cli

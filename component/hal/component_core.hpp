@@ -25,7 +25,7 @@
 
 namespace firtp {
 
-// Values as in firtp_lcm::status_t.
+// Values as in firtp_lcm::status_t (static_assert in component/bridge/src/protocol_codes.cpp).
 enum class ComponentState : std::int32_t { idle = 0, moving = 1, holding = 2, aborting = 3, error = 4, disabled = 5 };
 enum class ComponentError : std::int32_t {
     none = 0, bad_value = 1, sequence_gap = 2, repeated = 3, queue_full = 4, bad_type = 5, not_enabled = 6, lost_state = 7,

@@ -82,7 +82,7 @@ RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_
 static char* rate_reserve = nullptr;
 RTAPI_MP_STRING(rate_reserve, "fixed chain: share of acceleration and jerk limits kept for override and hold ramps (" FIRTP_DEFAULT_RATE_RESERVE_TEXT ")");
 static int stream_depth = 4096;
-RTAPI_MP_INT(stream_depth, "records each stream holds");
+RTAPI_MP_INT(stream_depth, "blocks the block stream holds, periods the axis-state stream holds");
 static char* brake_speed = nullptr;
 RTAPI_MP_STRING(brake_speed, "vel-fb speed, units/s, above which a start or enable brakes from the feedback (1)");
 
@@ -219,10 +219,17 @@ void update(void*, long) {
     pin::set(pins->rejected, out.rejected);
     if (has_state_stream) {
         hal_stream_data record[firtp::stream::state_elements];
-        for (int g = 0; g < firtp::stream::groups_for(axes); ++g) {
+        bool lost = false;  // a period's records go whole or not at all: one axis state lost
+        for (int g = 0; g < firtp::stream::groups_for(axes) && !lost; ++g) {
             firtp::stream::pack_state(out.state, ticks, g, axes, record);
-            if (hal_stream_write(&state_stream, record) != 0) ++state_overruns;
+            lost = hal_stream_write(&state_stream, record) != 0;
         }
+        if (!lost) {
+            firtp::stream::pack_progress({out.program, out.next_seq}, ticks, static_cast<std::int32_t>(out.state.line),
+                                         axes, record);
+            lost = hal_stream_write(&state_stream, record) != 0;
+        }
+        if (lost) ++state_overruns;
     }
     ticks = ticks + 1;
     pin::set(pins->tick, ticks);
@@ -442,8 +449,8 @@ extern "C" int rtapi_app_main(void) {
         has_block_stream = true;
     }
     if (state_key != 0) {
-        if (hal_stream_create(&state_stream, comp_id, static_cast<int>(state_key), stream_depth,
-                              firtp::stream::state_types) != 0)
+        if (hal_stream_create(&state_stream, comp_id, static_cast<int>(state_key),
+                              stream_depth * firtp::stream::records_per_period(axes), firtp::stream::state_types) != 0)
             return fail("cannot create the axis-state stream");
         has_state_stream = true;
     }

@@ -54,12 +54,23 @@ inline void unpack(const hal_stream_data* in, BlockRecord& r) {
     r.block.termination = termination == 1 ? Termination::blend : Termination::exact_stop;
 }
 
-// tick, line, group (0: axes 0-5, 1: axes 6-8), then position, velocity, acceleration of six axes
+// Every period: one record per group of six axes, then one progress record.
+// Axis group: tick, line, group (0: axes 0-5, 1: axes 6-8), then position, velocity, acceleration
+// of six axes. Progress: tick, line, group = groups_for(axes), then the component's program and
+// next_seq after the period (axis_state_t's), each as low and high 32-bit halves in a double (exact).
 inline constexpr const char* state_types = "usu" "fff" "fff" "fff" "fff" "fff" "fff";
 inline constexpr int state_elements = 21;
 inline constexpr int axes_per_group = 6;
 
 inline int groups_for(int axes) { return axes > axes_per_group ? 2 : 1; }
+inline int progress_group(int axes) { return groups_for(axes); }
+inline int records_per_period(int axes) { return groups_for(axes) + 1; }  // the axis-state stream holds
+                                                                            // stream_depth periods
+
+struct Progress {
+    std::uint64_t program = 0;
+    std::uint64_t next_seq = 1;
+};
 
 inline void pack_state(const AxisState& s, std::int64_t tick, int group, int axes, hal_stream_data* out) {
     out[0].u = static_cast<std::uint32_t>(tick);
@@ -72,6 +83,22 @@ inline void pack_state(const AxisState& s, std::int64_t tick, int group, int axe
         out[4 + 3 * i].f = used ? s.velocity[a] : 0.0;
         out[5 + 3 * i].f = used ? s.acceleration[a] : 0.0;
     }
+}
+
+inline void pack_progress(const Progress& p, std::int64_t tick, std::int32_t line, int axes, hal_stream_data* out) {
+    out[0].u = static_cast<std::uint32_t>(tick);
+    out[1].s = line;
+    out[2].u = static_cast<std::uint32_t>(progress_group(axes));
+    out[3].f = static_cast<double>(p.program & 0xffffffffu);
+    out[4].f = static_cast<double>(p.program >> 32);
+    out[5].f = static_cast<double>(p.next_seq & 0xffffffffu);
+    out[6].f = static_cast<double>(p.next_seq >> 32);
+    for (int i = 7; i < state_elements; ++i) out[i].f = 0.0;
+}
+
+inline Progress unpack_progress(const hal_stream_data* in) {
+    const auto half = [](double v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)); };
+    return {half(in[3].f) | half(in[4].f) << 32, half(in[5].f) | half(in[6].f) << 32};
 }
 
 }  // namespace firtp::stream

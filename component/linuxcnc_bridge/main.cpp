@@ -41,8 +41,8 @@ struct Options {
     int axes = 3;
     long period_ns = firtp::defaults::servo_period_ns;
     int sampler_channel = 0;
-    int live_decimation = 20;
-    int status_every = 10;
+    int live_decimation = firtp::messages::default_live_decimation;
+    int status_every = firtp::messages::default_status_every;
     double max_feed_scale = 2.0;
 };
 
@@ -58,8 +58,10 @@ bool parse(int argc, char** argv, Options& o, int& code) {
         "axes", po::value(&o.axes)->value_name("N"), "axes, 1-9 (3): firtp's axes= or the sampler's positions")(
         "period-ns", po::value(&o.period_ns)->value_name("NS"), ("servo period ([EMCMOT]SERVO_PERIOD, " + std::to_string(firtp::defaults::servo_period_ns) + ")").c_str())(
         "sampler-channel", po::value(&o.sampler_channel)->value_name("N"), "motion: the sampler channel (0)")(
-        "live-decimation", po::value(&o.live_decimation)->value_name("N"), "FIRTP_AXIS_STATE_LIVE every N periods (20)")(
-        "status-every", po::value(&o.status_every)->value_name("N"), "FIRTP_STATUS every N periods and on changes (10)")(
+        "live-decimation", po::value(&o.live_decimation)->value_name("N"),
+        ("FIRTP_AXIS_STATE_LIVE every N periods (" + std::to_string(o.live_decimation) + ")").c_str())(
+        "status-every", po::value(&o.status_every)->value_name("N"),
+        ("FIRTP_STATUS every N periods and on changes (" + std::to_string(o.status_every) + ")").c_str())(
         "max-feed-scale", po::value(&o.max_feed_scale)->value_name("X"),
         "firtp: highest feed override a host may set ([DISPLAY]MAX_FEED_OVERRIDE, 2)");
     try {

@@ -111,10 +111,7 @@ void MotionPublisher::publish_state(std::int64_t tick, std::int32_t line, const 
     history_ = history_ < 2 ? history_ + 1 : 2;
     m.seq = ++state_seq_;
     messages::publish(*lcm_, messages::axis_state_channel, m);
-    if (options_.live_decimation > 0 && tick % options_.live_decimation == 0) {
-        m.seq = tick / options_.live_decimation;
-        messages::publish(*lcm_, messages::axis_state_live_channel, m);
-    }
+    messages::publish_live(*lcm_, m, options_.live_decimation);
     ++states_;
     hal_pin::set(pins_->states, static_cast<std::uint32_t>(states_));
     if (line != line_) status_due_ = true;

@@ -22,8 +22,8 @@ struct MotionOptions {
     int axes = 3;                           // sampler columns 0..axes-1: positions (X Y Z ...)
     double period = defaults::servo_period;  // servo period, s
     int sampler_channel = 0;                // `loadrt sampler` channel N (its hal_stream)
-    int live_decimation = 20;               // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
-    int status_every = 10;                  // FIRTP_STATUS every N periods, and on every change
+    int live_decimation = messages::default_live_decimation;  // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
+    int status_every = messages::default_status_every;        // FIRTP_STATUS every N periods, and on every change
 };
 
 // The sampler channel's layout: the axes' positions (float), then the program line (s32).

@@ -68,7 +68,7 @@ std::string text(const firtp_lcm::status_t& m) {
 
 std::string text(const firtp_lcm::axis_state_t& m) {
     return Line("axis_state_t").field("seq", m.seq).field("tick", m.tick).field("line", m.line)
-        .xyz("position", m.position).str();
+        .xyz("position", m.position).field("program", m.program).field("next_seq", m.next_seq).str();
 }
 
 std::string text(const firtp_lcm::control_t& m) {

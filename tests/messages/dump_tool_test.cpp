@@ -77,6 +77,8 @@ protected:
         axis.position[0] = 1.5;
         axis.position[1] = -2.0;
         axis.position[2] = 0.125;
+        axis.program = 7;
+        axis.next_seq = 6;
         for (std::int64_t seq : {1, 2, 5}) {
             axis.seq = seq;
             axis.tick = 100 + seq;
@@ -109,7 +111,7 @@ TEST_F(DumpTool, OneLinePerEvent) {
     EXPECT_TRUE(contains(run.out, " FIRTP_STATUS status_t seq=2 next_seq=3 state=error queue=2 free=62 error=2 "
                                   "\"gap at 3\"\n")) << run.out;
     EXPECT_TRUE(contains(run.out, " FIRTP_AXIS_STATE_LIVE axis_state_t seq=5 tick=105 line=40 "
-                                  "position=(1.5,-2,0.125)\n")) << run.out;
+                                  "position=(1.5,-2,0.125) program=7 next_seq=6\n")) << run.out;
     EXPECT_TRUE(contains(run.out, " FIRTP_CONTROL control_t seq=1 feed_scale=0.75 hold=1 abort=0\n")) << run.out;
     EXPECT_TRUE(contains(run.out, "1013 OTHER ? 3 bytes\n")) << run.out;
     EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n'), 14) << run.out;

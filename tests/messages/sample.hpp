@@ -54,6 +54,8 @@ inline firtp_lcm::axis_state_t sample_axis_state() {
         state.velocity[axis] = -axis * 1.5;
         state.acceleration[axis] = axis * 100.0;
     }
+    state.program = 7;
+    state.next_seq = 12;
     return state;
 }
 

@@ -3,9 +3,20 @@
    edit_log.py IN OUT drop CHANNEL EVERY   drop every EVERY-th event on CHANNEL (the 2nd, ...)
    edit_log.py IN OUT dup CHANNEL EVERY    write every EVERY-th event on CHANNEL twice
    edit_log.py IN OUT flip CHANNEL INDEX   flip one bit in the INDEX-th event on CHANNEL (crc no longer matches)
-   edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL"""
+   edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL
+   edit_log.py IN OUT nudge CHANNEL INDEX  change the lowest bit of position X in the INDEX-th axis state,
+                                           crc recomputed (an intact message that says something else)
+"""
 import struct
 import sys
+import zlib
+
+POSITION_X = 44  # axis_state_t: fingerprint, utime, seq, tick (8 bytes each), time (8), line (4)
+
+
+def sealed(payload):
+    """The message with its crc (last 4 bytes) recomputed: lcm-types/README.md, "Integrity"."""
+    return payload[:-4] + struct.pack(">I", zlib.crc32(payload[:-4]))
 
 SYNC = 0xEDA1DA01
 
@@ -37,6 +48,9 @@ def main():
             continue
         if op == "flip" and seen == arg:
             payload = payload[:20] + bytes([payload[20] ^ 1]) + payload[21:]
+        if op == "nudge" and seen == arg:
+            at = POSITION_X + 7
+            payload = sealed(payload[:at] + bytes([payload[at] ^ 1]) + payload[at + 1:])
         out.append((utime, ch, payload))
         if op == "dup" and seen % arg == 0:
             out.append((utime, ch, payload))

@@ -7,8 +7,7 @@
 # PATH: spiral (1 mm chords of a 2 m circle) or zigzag (0.5 mm steps across 0.3 mm, the stream
 # benchmark's). SECONDS: stop host and component after that long (the log then ends in the middle
 # of the motion; the replay compares what was recorded). REPLAY: equal (the replay must equal the
-# recording: the default) or report (print its result only: a long serve run's motion depends on
-# when the component took each block, which the log does not hold; docs/RECORDING.md).
+# recording bit for bit: the default) or report (print its result only, for measurements).
 # $FIRTP_KEEP=DIR keeps the files there.
 set -euo pipefail
 firtp=$1 dump=$2 ini=$3 blocks=$4 feed=$5 queue=${6:-1024} path=${7:-spiral} seconds=${8:-0} replay=${9:-equal}

@@ -26,6 +26,12 @@ expect "another machine differs" 4 "position X: recorded .*, replayed " \
   "$firtp" replay "$log" --ini "$examples/diamond_modes.ini"
 expect "where it differs" 4 "first difference: FIRTP_AXIS_STATE seq [0-9]+ \\(log event [0-9]+, tick [0-9]+, t = " \
   "$firtp" replay "$log" --ini "$examples/diamond_modes.ini"
+# An intact log that says something else: one axis state's position X changed by its lowest bit
+# (crc recomputed) is a difference, named at that state.
+edit nudged nudge FIRTP_AXIS_STATE 700
+expect "an altered state, named" 4 "first difference: FIRTP_AXIS_STATE seq 700 \\(log event [0-9]+, tick 699, " \
+  "$firtp" replay "$work/nudged.lcmlog"
+expect "an altered state: position X" 4 "^  position X: recorded " "$firtp" replay "$work/nudged.lcmlog"
 edit no_config strip FIRTP_CONFIG
 expect "no machine in the log" 1 "no FIRTP_CONFIG in the log" "$firtp" replay "$work/no_config.lcmlog"
 expect "no machine, --ini given" 0 "result +equal" "$firtp" replay "$work/no_config.lcmlog" --ini "$examples/diamond.ini"

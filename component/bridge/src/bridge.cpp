@@ -52,6 +52,8 @@ struct Bridge::Streams {
     hal_stream_t states;
     bool has_states = false;
     AxisState pending;  // axis state being assembled from its groups
+    std::uint32_t pending_tick = 0;
+    int pending_groups = 0;  // of pending_tick's, received in order
 };
 
 const char* const* Bridge::pin_pairs() { return pairs; }
@@ -206,19 +208,24 @@ void Bridge::on_control(const firtp_lcm::control_t* m) {
 void Bridge::forward_states() {
     if (!streams_->has_states) return;
     hal_stream_data record[stream::state_elements];
-    const int groups = stream::groups_for(options_.axes);
+    const int progress_group = stream::progress_group(options_.axes);
     while (hal_stream_read(&streams_->states, record, nullptr) == 0) {
         AxisState& s = streams_->pending;
         const int group = static_cast<int>(record[2].u);
-        for (int i = 0; i < stream::axes_per_group; ++i) {
+        const std::uint32_t tick32 = record[0].u;
+        const bool in_order = group == 0 || (tick32 == streams_->pending_tick && group == streams_->pending_groups);
+        streams_->pending_groups = group == progress_group ? 0 : in_order ? group + 1 : 0;
+        streams_->pending_tick = tick32;
+        for (int i = 0; group < progress_group && i < stream::axes_per_group; ++i) {
             const int a = group * stream::axes_per_group + i;
             if (a >= max_axes) break;
             s.position[a] = record[3 + 3 * i].f;
             s.velocity[a] = record[4 + 3 * i].f;
             s.acceleration[a] = record[5 + 3 * i].f;
         }
-        if (group != groups - 1) continue;
-        const std::uint32_t tick32 = record[0].u;
+        // The period's last record, its progress, completes its axis groups (a period whose
+        // groups did not all fit the stream is lost: reported at the next one as a gap in the ticks).
+        if (group != progress_group || !in_order) continue;
         const std::int64_t tick =
             last_tick_ < 0 ? tick32 : last_tick_ + static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(last_tick_));
         if (last_tick_ >= 0 && tick != last_tick_ + 1)
@@ -226,6 +233,7 @@ void Bridge::forward_states() {
                    std::to_string(tick - last_tick_ - 1) + " axis states lost before tick " + std::to_string(tick) +
                        " (the bridge fell behind the servo thread)");
         last_tick_ = tick;
+        const stream::Progress progress = stream::unpack_progress(record);
         firtp_lcm::axis_state_t m;
         m.utime = messages::now_utime();
         m.tick = tick;
@@ -236,14 +244,13 @@ void Bridge::forward_states() {
             m.velocity[a] = s.velocity[a];
             m.acceleration[a] = s.acceleration[a];
         }
+        m.program = static_cast<std::int64_t>(progress.program);
+        m.next_seq = static_cast<std::int64_t>(progress.next_seq);
         if (options_.every_period) {
             m.seq = ++state_seq_;
             messages::publish(*lcm_, messages::axis_state_channel, m);
         }
-        if (options_.live_decimation > 0 && tick % options_.live_decimation == 0) {
-            m.seq = tick / options_.live_decimation;
-            messages::publish(*lcm_, messages::axis_state_live_channel, m);
-        }
+        messages::publish_live(*lcm_, m, options_.live_decimation);
         ++states_;
         if (++periods_since_status_ >= options_.status_every) status_due_ = true;
     }

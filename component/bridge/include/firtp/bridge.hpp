@@ -18,13 +18,13 @@ namespace firtp {
 
 struct BridgeOptions {
     const char* name = "firtp-bridge";  // HAL component name and pin prefix (pin_pairs() name the default)
-    int block_key = 0x46495242;       // the component's block_key
-    int state_key = 0x46495253;       // the component's state_key (0: no axis states)
+    int block_key = firtp_lcm::config_t::BLOCK_STREAM_KEY;  // the component's block_key
+    int state_key = firtp_lcm::config_t::STATE_STREAM_KEY;  // the component's state_key (0: no axis states)
     int axes = 3;
     double period = defaults::servo_period;  // servo period, s
     bool every_period = true;         // publish FIRTP_AXIS_STATE for every period
-    int live_decimation = 20;         // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
-    int status_every = 10;            // FIRTP_STATUS every N periods, and on every change
+    int live_decimation = messages::default_live_decimation;  // FIRTP_AXIS_STATE_LIVE every N periods (0: never)
+    int status_every = messages::default_status_every;        // FIRTP_STATUS every N periods, and on every change
     double max_feed_scale = 2.0;
 };
 

@@ -26,6 +26,11 @@ inline constexpr const char* axis_state_live_channel = "FIRTP_AXIS_STATE_LIVE"; 
 inline constexpr const char* control_channel = "FIRTP_CONTROL";
 inline constexpr const char* config_channel = "FIRTP_CONFIG";  // machine and settings (config_t)
 
+// How often the component side publishes, by default (every bridge): FIRTP_AXIS_STATE_LIVE every
+// N servo periods, FIRTP_STATUS every N periods and on every change.
+inline constexpr int default_live_decimation = 20;
+inline constexpr int default_status_every = 10;
+
 // LCM's default multicast group with ttl=0 (this host only) and an 8 MiB receive buffer.
 std::string default_url();
 
@@ -50,10 +55,7 @@ std::string describe(const firtp_lcm::block_t& message);
 // Wall-clock microseconds since the epoch, LCM's utime convention.
 std::int64_t now_utime();
 
-// ---- Integrity, end to end (LCM has no checksum) ----
-// Every firtp_lcm type ends with `int32_t crc`: the CRC-32 (IEEE 802.3, as zlib.crc32 and
-// boost::crc_32_type) of its LCM encoding without the last 4 bytes (the 8-byte fingerprint and
-// every other field); those last 4 bytes are the crc, big-endian (block_t.lcm says it in full).
+// ---- Integrity, end to end (lcm-types/README.md, "Integrity") ----
 // Senders seal (or publish(), which seals); receivers take the bytes as received to receive(),
 // which checks the crc before it decodes.
 
@@ -96,6 +98,11 @@ template <class Message> int publish(lcm::LCM& lcm, const std::string& channel, 
     return lcm.publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
 }
 
+// The live view for lcm-spy: publishes `state` on FIRTP_AXIS_STATE_LIVE when its tick is a multiple
+// of `decimation` (0: never), with seq tick / decimation (so a gap there is a lost message too).
+// True when it published.
+bool publish_live(lcm::LCM& lcm, firtp_lcm::axis_state_t state, int decimation);
+
 // For intact bytes that are not exactly one message of the type:
 // "intact, but not a block_t of this version (120 bytes, fingerprint 0x0123456789abcdef)".
 std::string not_this_type(const void* data, std::size_t size, const char* type);
@@ -127,7 +134,7 @@ template <class Message> Received<Message> receive(const void* data, std::size_t
 // Valid message -> block (call validate first).
 Block to_block(const firtp_lcm::block_t& message);
 
-// Exactly-once, in-order acceptance of (program, seq); program ids only increase.
+// Exactly-once, in-order acceptance of (program, seq) (lcm-types/README.md, "Exactly once").
 class SequenceChecker {
 public:
     enum class Verdict {
