@@ -99,7 +99,7 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     Block block = record.block;
     if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
         block.tolerance = settings_.default_tolerance;
-    if (planner_.add(block) != Result::ok) {  // the caller made room: only bad values
+    if (const Result r = planner_.add(block); r != Result::ok && r != Result::skipped) {  // the caller made room: only bad values
         fail(ComponentError::bad_value);
         return false;
     }
@@ -136,9 +136,10 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             aborting_ = true;
         }
         const bool stopping = in.hold || in.abort || aborting_;
-        planner_.set_rate(braking_now_ ? 1.0
-                          : stopping   ? 0.0
-                                       : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
+        PlannerInput motion;
+        motion.rate = braking_now_ ? 1.0 : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate);
+        motion.hold = stopping && !braking_now_;
+        planner_.set_rate(motion.hold ? 0.0 : motion.rate);  // now: the blocks below are planned at it
 
         if (in.abort || aborting_ || braking_now_) {  // refuse the rest of a stopped program
             refuse_inputs(in, source);
@@ -163,8 +164,10 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
                  ++k)
                 accept(record, true);
         }
-        planner_.tick(last_);
-        if (planner_.take_flushed()) aborting_ = false;  // at rest: the planner starts there
+        PlannerOutput period;
+        planner_.update(motion, period);
+        last_ = period.state;
+        if (period.flushed) aborting_ = false;  // at rest: the planner starts there
         if (braking_now_ && planner_.idle()) braking_now_ = false;
     }
     if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset

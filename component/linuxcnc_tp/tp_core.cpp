@@ -147,6 +147,7 @@ struct TpCore::Impl {
     bool dirty = true;           // the planner differs from what the settings and limits ask
 
     std::optional<Planner> planner;
+    PlannerInput input;          // the override and pause the planner was last given (kept while aborting)
     AxisState state{};
     Pose pose{};                 // state.position
     Pose goal{};                 // end of the last accepted move
@@ -157,7 +158,7 @@ struct TpCore::Impl {
     int plan_chord = 0;          // its next chord
     std::int64_t finished_seq = 0;
     std::int64_t started_seq = 0;  // newest move whose blocks started moving
-    std::uint64_t pushed = 0;    // blocks pushed into the interpolator since the last flush
+    std::uint64_t pushed = 0;    // blocks queued in the planner since the last flush
 
     int next_id = 0;
     int term_cond = term_parabolic;
@@ -225,6 +226,7 @@ struct TpCore::Impl {
         planner.reset();
         wanted.max_rate = max_rate;  // the highest override asked for since the limits came
         planner.emplace(wanted, at);
+        input = PlannerInput{};  // as a new planner starts
         built_rate = max_rate;
         pushed = 0;
         dirty = false;
@@ -312,14 +314,14 @@ struct TpCore::Impl {
             }
             Block b = chord_block(m, plan_chord);
             b.line = plan_seq;
-            const std::uint64_t before = planner->accepted();
-            if (planner->add(b) != Result::ok) {  // checked when added: cannot happen
+            const Result result = planner->add(b);
+            if (result != Result::ok && result != Result::skipped) {  // checked when added: cannot happen
                 ++stats.refused_blocks;  // the program stops on the path
                 planner->abort();
                 aborting = true;
                 break;
             }
-            pushed += planner->accepted() - before;
+            if (result == Result::ok) ++pushed;
             ++stats.planned;
             if (++plan_chord == m.chords) {
                 m.blocks_end = pushed;
@@ -572,10 +574,15 @@ void TpCore::run_cycle(const CycleInputs& in) {
         const double top = std::min(std::isfinite(in.max_feed_scale) ? std::max(in.max_feed_scale, 0.0) : 1.0,
                                     I.built_rate);
         const double scale_in = std::isfinite(in.feed_scale) ? in.feed_scale : 0.0;
-        if (!I.aborting) I.planner->set_rate(I.paused ? 0.0 : std::clamp(scale_in, 0.0, top));
-        I.planner->tick(I.state);
+        if (!I.aborting) {
+            I.input.rate = std::clamp(scale_in, 0.0, top);
+            I.input.hold = I.paused;
+        }
+        PlannerOutput out;
+        I.planner->update(I.input, out);
+        I.state = out.state;
         I.pose = to_pose(I.state.position);
-        if (I.planner->take_flushed()) I.drop_moves();  // an abort came to rest: drop the rest of the program
+        if (out.flushed) I.drop_moves();  // an abort came to rest: drop the rest of the program
     } else if (I.aborting) {
         I.drop_moves();
     }

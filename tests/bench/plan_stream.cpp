@@ -204,8 +204,8 @@ int main(int argc, char** argv) try {
             const std::int64_t w1 = wall_ns();
             const std::int64_t c1 = thread_cpu_ns();
             if (result == Result::queue_full) break;
-            if (result == Result::invalid_block) {
-                std::fprintf(stderr, "line %lld: invalid block\n", static_cast<long long>(pending->line));
+            if (refused(result)) {
+                std::fprintf(stderr, "line %lld: %s\n", static_cast<long long>(pending->line), planner.refusal());
                 return 1;
             }
             add_cpu.add(c1 - c0);
