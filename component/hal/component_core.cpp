@@ -53,7 +53,7 @@ AxisVector ComponentCore::feedback(const AxisVector& pins, const AxisVector& oth
 }
 
 void ComponentCore::take_over(const ComponentInputs& in) {
-    const AxisVector at = feedback(in.position_feedback, last_.position);
+    const AxisVector at = feedback(in.position_feedback, last_.state.position);
     const AxisVector velocity = feedback(in.velocity_feedback, AxisVector::Zero());
     planner_.reset(at);
     unchecked_halted_ = false;  // enable rose: the operator's reset for blocks with seq 0
@@ -119,15 +119,15 @@ int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) 
 
 void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
-        const AxisVector at = feedback(in.position_feedback, last_.position);
+        const AxisVector at = feedback(in.position_feedback, last_.state.position);
         if (enabled_ || !started_) drop_everything(at);  // drives are off: no deceleration, no queue
         enabled_ = false;
         braking_now_ = false;
         if (refuse_inputs(in, source) > 0) error_ = ComponentError::not_enabled;
-        last_.position = at;  // follow the axes, so that enabling moves nothing
-        last_.velocity.setZero();
-        last_.acceleration.setZero();
-        last_.jerk.setZero();
+        last_.state.position = at;  // follow the axes, so that enabling moves nothing
+        last_.state.velocity.setZero();
+        last_.state.acceleration.setZero();
+        last_.state.jerk.setZero();
     } else {
         if (!enabled_) take_over(in);
         enabled_ = true;
@@ -164,17 +164,15 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
                  ++k)
                 accept(record, true);
         }
-        PlannerOutput period;
-        planner_.update(motion, period);
-        last_ = period.state;
-        if (period.flushed) aborting_ = false;  // at rest: the planner starts there
+        planner_.update(motion, last_);
+        if (last_.flushed) aborting_ = false;  // at rest: the planner starts there
         if (braking_now_ && planner_.idle()) braking_now_ = false;
     }
     if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset
     abort_pin_ = in.abort;
     started_ = true;
 
-    out.state = last_;
+    out.state = last_.state;
     out.ack = ack_;
     out.busy = !planner_.idle();
     out.done = planner_.idle();

@@ -148,8 +148,8 @@ struct TpCore::Impl {
 
     std::optional<Planner> planner;
     PlannerInput input;          // the override and pause the planner was last given (kept while aborting)
-    AxisState state{};
-    Pose pose{};                 // state.position
+    PlannerOutput output{};      // what the planner gave at the last period: the axes, an abort's end
+    Pose pose{};                 // output.state.position
     Pose goal{};                 // end of the last accepted move
 
     std::vector<Move> moves;     // ring, slot = seq % size
@@ -222,7 +222,7 @@ struct TpCore::Impl {
     // Only while nothing moves: the planner starts again at rest.
     void rebuild() {
         if (wanted_status != AddStatus::ok) return;  // the planner built before (if any) is kept
-        const AxisVector at = state.position;
+        const AxisVector at = output.state.position;
         planner.reset();
         wanted.max_rate = max_rate;  // the highest override asked for since the limits came
         planner.emplace(wanted, at);
@@ -241,17 +241,17 @@ struct TpCore::Impl {
         started_seq = finished_seq;
         pushed = 0;
         event_head = event_count = 0;
-        goal = to_pose(state.position);
+        goal = to_pose(output.state.position);
         paused = false;
         aborting = false;
     }
 
     void rest_at(const AxisVector& at) {
-        state.position = at;
+        output.state.position = at;
         pose = to_pose(at);
-        state.velocity.setZero();
-        state.acceleration.setZero();
-        state.jerk.setZero();
+        output.state.velocity.setZero();
+        output.state.acceleration.setZero();
+        output.state.jerk.setZero();
         if (built()) planner->reset(at);
         drop_moves();
     }
@@ -550,7 +550,7 @@ void TpCore::abort() {
 
 void TpCore::clear() {
     Impl& I = *impl_;
-    I.rest_at(I.state.position);
+    I.rest_at(I.output.state.position);
     // As the stock planner's tpClear: the latched mode goes back to plain blending, unsynchronised.
     I.term_cond = term_parabolic;
     I.term_tolerance = 0.0;
@@ -578,11 +578,9 @@ void TpCore::run_cycle(const CycleInputs& in) {
             I.input.rate = std::clamp(scale_in, 0.0, top);
             I.input.hold = I.paused;
         }
-        PlannerOutput out;
-        I.planner->update(I.input, out);
-        I.state = out.state;
-        I.pose = to_pose(I.state.position);
-        if (out.flushed) I.drop_moves();  // an abort came to rest: drop the rest of the program
+        I.planner->update(I.input, I.output);
+        I.pose = to_pose(I.output.state.position);
+        if (I.output.flushed) I.drop_moves();  // an abort came to rest: drop the rest of the program
     } else if (I.aborting) {
         I.drop_moves();
     }
@@ -621,7 +619,7 @@ const void* TpCore::exec_tag() const {
     return seq != 0 && impl_->move(seq).tag_size > 0 ? impl_->move(seq).tag : nullptr;
 }
 double TpCore::current_vel() const {
-    return feed_length(parts(impl_->state.velocity));
+    return feed_length(parts(impl_->output.state.velocity));
 }
 double TpCore::requested_vel() const {
     const std::int64_t seq = impl_->exec_seq();
@@ -635,7 +633,7 @@ Pose TpCore::dtg() const {
     const std::int64_t seq = impl_->exec_seq();
     if (seq == 0) return d;
     const Move& m = impl_->move(seq);
-    for (std::size_t a = 0; a < d.size(); ++a) d[a] = m.end[a] - impl_->state.position[static_cast<int>(a)];
+    for (std::size_t a = 0; a < d.size(); ++a) d[a] = m.end[a] - impl_->output.state.position[static_cast<int>(a)];
     return d;
 }
 const CycleStats& TpCore::stats() const { return impl_->stats; }
