@@ -99,7 +99,8 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     Block block = record.block;
     if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
         block.tolerance = settings_.default_tolerance;
-    if (const Result r = planner_.add(block); r != Result::ok && r != Result::skipped) {  // the caller made room: only bad values
+    // The caller made room: only bad values are refused.
+    if (const Result r = planner_.add(block); r != Result::ok && r != Result::skipped) {
         fail(ComponentError::bad_value);
         return false;
     }

@@ -58,17 +58,19 @@ Result Planner::add(const Block& block) {
         return Result::invalid_block;
     }
     if (aborting_) return Result::queue_full;
+    const AxisVector& from = goal();
     if (!paper_)  // an axis without an acceleration limit is one the machine does not have
         for (int a = 0; a < max_axes; ++a)
             if (!(a < parameters_.limits.axes && parameters_.limits.axis[a].max_acceleration > 0.0) &&
-                block.target[a] != goal()[a]) {
+                block.target[a] != from[a]) {
                 refusal_ = absent_axis_names[a];
                 return Result::absent_axis;
             }
     const Result r = paper_ ? paper_->add(block) : lookahead_->add(block);
     if (r == Result::ok) ++accepted_;
     if (r == Result::invalid_block) refusal_ = "invalid block";
-    if (r == Result::infeasible) refusal_ = "no feed, down to a stop, keeps this block within its tolerance and the axis limits";
+    if (r == Result::infeasible)
+        refusal_ = "no feed, down to a stop, keeps this block within its tolerance and the axis limits";
     return r;
 }
 
