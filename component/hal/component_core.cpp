@@ -53,7 +53,7 @@ AxisVector ComponentCore::feedback(const AxisVector& pins, const AxisVector& oth
 }
 
 void ComponentCore::take_over(const ComponentInputs& in) {
-    const AxisVector at = feedback(in.position_feedback, last_.position);
+    const AxisVector at = feedback(in.position_feedback, last_.state.position);
     const AxisVector velocity = feedback(in.velocity_feedback, AxisVector::Zero());
     planner_.reset(at);
     unchecked_halted_ = false;  // enable rose: the operator's reset for blocks with seq 0
@@ -99,7 +99,8 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     Block block = record.block;
     if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
         block.tolerance = settings_.default_tolerance;
-    if (planner_.add(block) != Result::ok) {  // the caller made room: only bad values
+    // The caller made room: only bad values are refused.
+    if (const Result r = planner_.add(block); r != Result::ok && r != Result::skipped) {
         fail(ComponentError::bad_value);
         return false;
     }
@@ -119,15 +120,15 @@ int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) 
 
 void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
-        const AxisVector at = feedback(in.position_feedback, last_.position);
+        const AxisVector at = feedback(in.position_feedback, last_.state.position);
         if (enabled_ || !started_) drop_everything(at);  // drives are off: no deceleration, no queue
         enabled_ = false;
         braking_now_ = false;
         if (refuse_inputs(in, source) > 0) error_ = ComponentError::not_enabled;
-        last_.position = at;  // follow the axes, so that enabling moves nothing
-        last_.velocity.setZero();
-        last_.acceleration.setZero();
-        last_.jerk.setZero();
+        last_.state.position = at;  // follow the axes, so that enabling moves nothing
+        last_.state.velocity.setZero();
+        last_.state.acceleration.setZero();
+        last_.state.jerk.setZero();
     } else {
         if (!enabled_) take_over(in);
         enabled_ = true;
@@ -136,9 +137,10 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             aborting_ = true;
         }
         const bool stopping = in.hold || in.abort || aborting_;
-        planner_.set_rate(braking_now_ ? 1.0
-                          : stopping   ? 0.0
-                                       : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate));
+        PlannerInput motion;
+        motion.rate = braking_now_ ? 1.0 : std::clamp(in.feed_scale, 0.0, settings_.planner.max_rate);
+        motion.hold = stopping && !braking_now_;
+        planner_.set_rate(motion.hold ? 0.0 : motion.rate);  // now: the blocks below are planned at it
 
         if (in.abort || aborting_ || braking_now_) {  // refuse the rest of a stopped program
             refuse_inputs(in, source);
@@ -163,15 +165,15 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
                  ++k)
                 accept(record, true);
         }
-        planner_.tick(last_);
-        if (planner_.take_flushed()) aborting_ = false;  // at rest: the planner starts there
+        planner_.update(motion, last_);
+        if (last_.flushed) aborting_ = false;  // at rest: the planner starts there
         if (braking_now_ && planner_.idle()) braking_now_ = false;
     }
     if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset
     abort_pin_ = in.abort;
     started_ = true;
 
-    out.state = last_;
+    out.state = last_.state;
     out.ack = ack_;
     out.busy = !planner_.idle();
     out.done = planner_.idle();

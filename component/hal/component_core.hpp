@@ -98,7 +98,7 @@ private:
     ComponentSettings settings_;
     Planner planner_;
     BrakingPeaks braking_;                // the paper's mode: how much of a velocity its chain can stop
-    AxisState last_{};
+    PlannerOutput last_{};               // the planner's output at the last period
     bool started_ = false;
     bool enabled_ = false;
     bool aborting_ = false;

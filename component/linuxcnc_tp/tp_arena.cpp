@@ -2,7 +2,7 @@
 // when the module loads, never from malloc in the servo thread.
 //
 // Why: LinuxCNC sends the axis limits after the planner was created, so TpCore builds its
-// Planner and Interpolator (std::vector inside) from them in the servo thread, once, before the
+// Planner (std::vector inside) from them in the servo thread, once, before the
 // first move (and again only if limits, period or MAX_FEED_OVERRIDE change while idle). With
 // this arena that build takes blocks reserved at load: freed blocks are kept per size and a
 // rebuild of the same sizes gets the same blocks back; other sizes come from the unused rest

@@ -147,8 +147,9 @@ struct TpCore::Impl {
     bool dirty = true;           // the planner differs from what the settings and limits ask
 
     std::optional<Planner> planner;
-    AxisState state{};
-    Pose pose{};                 // state.position
+    PlannerInput input;          // the override and pause the planner was last given (kept while aborting)
+    PlannerOutput output{};      // what the planner gave at the last period: the axes, an abort's end
+    Pose pose{};                 // output.state.position
     Pose goal{};                 // end of the last accepted move
 
     std::vector<Move> moves;     // ring, slot = seq % size
@@ -157,7 +158,7 @@ struct TpCore::Impl {
     int plan_chord = 0;          // its next chord
     std::int64_t finished_seq = 0;
     std::int64_t started_seq = 0;  // newest move whose blocks started moving
-    std::uint64_t pushed = 0;    // blocks pushed into the interpolator since the last flush
+    std::uint64_t pushed = 0;    // blocks queued in the planner since the last flush
 
     int next_id = 0;
     int term_cond = term_parabolic;
@@ -221,10 +222,11 @@ struct TpCore::Impl {
     // Only while nothing moves: the planner starts again at rest.
     void rebuild() {
         if (wanted_status != AddStatus::ok) return;  // the planner built before (if any) is kept
-        const AxisVector at = state.position;
+        const AxisVector at = output.state.position;
         planner.reset();
         wanted.max_rate = max_rate;  // the highest override asked for since the limits came
         planner.emplace(wanted, at);
+        input = PlannerInput{};  // as a new planner starts
         built_rate = max_rate;
         pushed = 0;
         dirty = false;
@@ -239,17 +241,17 @@ struct TpCore::Impl {
         started_seq = finished_seq;
         pushed = 0;
         event_head = event_count = 0;
-        goal = to_pose(state.position);
+        goal = to_pose(output.state.position);
         paused = false;
         aborting = false;
     }
 
     void rest_at(const AxisVector& at) {
-        state.position = at;
+        output.state.position = at;
         pose = to_pose(at);
-        state.velocity.setZero();
-        state.acceleration.setZero();
-        state.jerk.setZero();
+        output.state.velocity.setZero();
+        output.state.acceleration.setZero();
+        output.state.jerk.setZero();
         if (built()) planner->reset(at);
         drop_moves();
     }
@@ -312,14 +314,14 @@ struct TpCore::Impl {
             }
             Block b = chord_block(m, plan_chord);
             b.line = plan_seq;
-            const std::uint64_t before = planner->accepted();
-            if (planner->add(b) != Result::ok) {  // checked when added: cannot happen
+            const Result result = planner->add(b);
+            if (result != Result::ok && result != Result::skipped) {  // checked when added: cannot happen
                 ++stats.refused_blocks;  // the program stops on the path
                 planner->abort();
                 aborting = true;
                 break;
             }
-            pushed += planner->accepted() - before;
+            if (result == Result::ok) ++pushed;
             ++stats.planned;
             if (++plan_chord == m.chords) {
                 m.blocks_end = pushed;
@@ -548,7 +550,7 @@ void TpCore::abort() {
 
 void TpCore::clear() {
     Impl& I = *impl_;
-    I.rest_at(I.state.position);
+    I.rest_at(I.output.state.position);
     // As the stock planner's tpClear: the latched mode goes back to plain blending, unsynchronised.
     I.term_cond = term_parabolic;
     I.term_tolerance = 0.0;
@@ -572,10 +574,13 @@ void TpCore::run_cycle(const CycleInputs& in) {
         const double top = std::min(std::isfinite(in.max_feed_scale) ? std::max(in.max_feed_scale, 0.0) : 1.0,
                                     I.built_rate);
         const double scale_in = std::isfinite(in.feed_scale) ? in.feed_scale : 0.0;
-        if (!I.aborting) I.planner->set_rate(I.paused ? 0.0 : std::clamp(scale_in, 0.0, top));
-        I.planner->tick(I.state);
-        I.pose = to_pose(I.state.position);
-        if (I.planner->take_flushed()) I.drop_moves();  // an abort came to rest: drop the rest of the program
+        if (!I.aborting) {
+            I.input.rate = std::clamp(scale_in, 0.0, top);
+            I.input.hold = I.paused;
+        }
+        I.planner->update(I.input, I.output);
+        I.pose = to_pose(I.output.state.position);
+        if (I.output.flushed) I.drop_moves();  // an abort came to rest: drop the rest of the program
     } else if (I.aborting) {
         I.drop_moves();
     }
@@ -614,7 +619,7 @@ const void* TpCore::exec_tag() const {
     return seq != 0 && impl_->move(seq).tag_size > 0 ? impl_->move(seq).tag : nullptr;
 }
 double TpCore::current_vel() const {
-    return feed_length(parts(impl_->state.velocity));
+    return feed_length(parts(impl_->output.state.velocity));
 }
 double TpCore::requested_vel() const {
     const std::int64_t seq = impl_->exec_seq();
@@ -628,7 +633,7 @@ Pose TpCore::dtg() const {
     const std::int64_t seq = impl_->exec_seq();
     if (seq == 0) return d;
     const Move& m = impl_->move(seq);
-    for (std::size_t a = 0; a < d.size(); ++a) d[a] = m.end[a] - impl_->state.position[static_cast<int>(a)];
+    for (std::size_t a = 0; a < d.size(); ++a) d[a] = m.end[a] - impl_->output.state.position[static_cast<int>(a)];
     return d;
 }
 const CycleStats& TpCore::stats() const { return impl_->stats; }

@@ -1,5 +1,5 @@
 // firtp as LinuxCNC's trajectory planner, free of LinuxCNC's headers: what the tp.h functions do,
-// on the firtp core (Planner, Interpolator, FIR chain). tp_module.cpp maps tp.h onto this class;
+// on the firtp core (its one owner, Planner: planner.hpp). tp_module.cpp maps tp.h onto this class;
 // the tests drive it directly.
 //
 // Principle of operation:
@@ -10,7 +10,7 @@
 //   plan_budget_ns), so a long arc is spread over several periods. The planner is causal: the
 //   first move starts on the period it is planned in and a late move only shortens its overlap,
 //   so motion never waits for a look-ahead to fill and never stalls when moves come slowly.
-// - Every block carries its move's sequence number in Block.line, so the Interpolator's
+// - Every block carries its move's sequence number in Block.line, so the Planner's
 //   current_line() names the move in motion: its id, state tag, motion type and enables (kept in
 //   the move ring) become exec id/tag/type/enables. A move is finished when its last block has
 //   retired; depth = moves accepted and not finished, done = depth 0, full = depth within the
@@ -61,7 +61,7 @@ struct TpSettings {
     double rate_reserve = defaults::rate_reserve;  // share of acceleration and jerk kept for override/hold ramps (0..1)
     std::size_t moves = 1024;          // moves accepted and not finished, at most
     std::size_t full_margin = 16;      // full() this many moves before the ring is
-    std::size_t blocks = 4096;         // planned blocks not yet retired (interpolator), at most
+    std::size_t blocks = 4096;         // planned blocks not yet retired (the Planner), at most
     int max_blocks_per_cycle = 64;     // planned per period at most
     std::int64_t plan_budget_ns = 250000;  // and only while planning took less than this (0: no time limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
@@ -122,7 +122,7 @@ struct CycleStats {
     std::int64_t refused_blocks = 0;  // blocks the planner refused (the program stopped on the path)
     std::int64_t refused_windows = 0; // limit or period changes refused: filter window too long
     std::size_t pending = 0;      // moves not yet completely planned
-    std::size_t blocks = 0;       // blocks in the interpolator
+    std::size_t blocks = 0;       // blocks in the Planner
 };
 
 class TpCore {

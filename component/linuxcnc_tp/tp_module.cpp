@@ -22,7 +22,7 @@
 // HAL (component firtp_tp, for measurement): pins firtp_tp.cycle-ns (tpRunCycle's time),
 // firtp_tp.plan-ns (the planning part), firtp_tp.planned (blocks planned this period),
 // firtp_tp.add-ns (the last tpAdd*), firtp_tp.adds (tpAdd* calls so far), firtp_tp.pending (moves not yet planned), firtp_tp.blocks
-// (blocks in the interpolator), firtp_tp.depth, firtp_tp.rebuilds, firtp_tp.arena-kb.
+// (blocks in the planner), firtp_tp.depth, firtp_tp.rebuilds, firtp_tp.arena-kb.
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"

@@ -195,8 +195,10 @@ int main(int argc, char** argv) try {
     std::optional<Block> pending = source->next();
 
     const std::int64_t cpu_begin = thread_cpu_ns(), wall_begin = wall_ns();
-    AxisState state;
-    for (;;) {
+    PlannerInput input;
+    PlannerOutput output;
+    const AxisState& state = output.state;
+    for (Result motion = Result::working; motion == Result::working || pending;) {
         while (pending && planner.free() > 0) {
             const std::int64_t c0 = thread_cpu_ns();
             const std::int64_t w0 = wall_ns();
@@ -204,23 +206,22 @@ int main(int argc, char** argv) try {
             const std::int64_t w1 = wall_ns();
             const std::int64_t c1 = thread_cpu_ns();
             if (result == Result::queue_full) break;
-            if (result == Result::invalid_block) {
-                std::fprintf(stderr, "line %lld: invalid block\n", static_cast<long long>(pending->line));
+            if (refused(result)) {
+                std::fprintf(stderr, "line %lld: %s\n", static_cast<long long>(pending->line), planner.refusal());
                 return 1;
             }
             add_cpu.add(c1 - c0);
             add_wall.add(w1 - w0);
-            const double length = (pending->target - last_end).norm();
-            if (length >= min_block_length) {
-                tv_sum += length / pending->feed;
+            if (result == Result::ok) {  // not skipped (zero length)
+                tv_sum += (pending->target - last_end).norm() / pending->feed;
                 last_end = pending->target;
             }
             goal = pending->target;
             if (++planned == warm_after) warm_peak_kib = peak_rss_kib();
             pending = source->next();
         }
-        if (!pending) planner.finish();
-        planner.tick(state);
+        input.end_of_program = !pending;
+        motion = planner.update(input, output);
         for (CornerReport corner; planner.take_report(corner);) {
             ++corners;
             gaps += td - corner.Tk;
@@ -232,7 +233,6 @@ int main(int argc, char** argv) try {
             max_a = std::max(max_a, std::abs(state.acceleration[a]));
             max_j = std::max(max_j, std::abs(state.jerk[a]));
         }
-        if (!pending && planner.idle()) break;
     }
     const double cpu_s = static_cast<double>(thread_cpu_ns() - cpu_begin) * 1e-9;
     const double wall_s = static_cast<double>(wall_ns() - wall_begin) * 1e-9;

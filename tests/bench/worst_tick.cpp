@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
         // Keep the queue fed: up to 4 blocks a period (short blocks can take less than a period).
         for (int i = 0; i < 4 && planner.free() > 0 && planner.depth() < 32; ++i) {
             const Block b = moves.next();
-            if (planner.add(b) != Result::ok) {
+            if (refused(planner.add(b))) {
                 std::fprintf(stderr, "block %lld refused\n", static_cast<long long>(b.line));
                 return 1;
             }

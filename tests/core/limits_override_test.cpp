@@ -43,7 +43,7 @@ Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const 
         for (; next < blocks.size(); ++next) {
             const Result result = planner.add(blocks[next]);
             if (result == Result::queue_full) break;
-            EXPECT_EQ(result, Result::ok);
+            EXPECT_TRUE(result == Result::ok || result == Result::skipped) << static_cast<int>(result);
             r.points.push_back(blocks[next].target);
         }
         if (next == blocks.size()) planner.finish();

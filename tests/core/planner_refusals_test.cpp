@@ -36,6 +36,8 @@ TEST(PlannerRefusals, PulseLongerThanTheClockIsRefusedAndNothingChanges) {
     b.feed = 1e-9;  // 1e10 s, 1e13 periods: slow, but it fits
     EXPECT_EQ(planner.add(b), Result::ok);
     EXPECT_EQ(planner.depth(), 1u);
+    EXPECT_EQ(planner.add(b), Result::skipped);  // zero length, in the paper's mode too
+    EXPECT_EQ(planner.depth(), 1u);
 }
 
 TEST(PlannerRefusals, AtTheLimitsValuesThatCannotWorkAreRefused) {
@@ -61,14 +63,17 @@ TEST(PlannerRefusals, AtTheLimitsValuesThatCannotWorkAreRefused) {
     p.limits.axis[1].max_acceleration = 0.0;
     Planner without_y(p, AxisVector::Zero());
     b.target[1] = 5.0;
-    EXPECT_EQ(without_y.add(b), Result::invalid_block);
+    EXPECT_EQ(without_y.add(b), Result::absent_axis);
     EXPECT_STREQ(without_y.refusal(), "moves Y, an axis the machine does not have (no acceleration limit)");
     b.target[1] = 0.0;
     b.target[6] = 1.0;  // U: beyond the machine's axes
-    EXPECT_EQ(without_y.add(b), Result::invalid_block);
+    EXPECT_EQ(without_y.add(b), Result::absent_axis);
     EXPECT_STREQ(without_y.refusal(), "moves U, an axis the machine does not have (no acceleration limit)");
     b.target[6] = 0.0;
     EXPECT_EQ(without_y.add(b), Result::ok);
+    EXPECT_EQ(without_y.accepted(), 1u);
+    EXPECT_EQ(without_y.add(b), Result::skipped);  // already there: nothing to plan, nothing counted
+    EXPECT_EQ(without_y.accepted(), 1u);
     for (int a = 0; a < 3; ++a) p.limits.axis[a].max_acceleration = 0.0;  // nothing to smooth at
     EXPECT_THROW(Planner(p, AxisVector::Zero()), std::invalid_argument);
     p.limits.axis[0].max_acceleration = -1.0;

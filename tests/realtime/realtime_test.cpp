@@ -2,7 +2,7 @@
 // random programs with overrides, holds, aborts, disabling and stream faults. Counted by hooks in
 // this program (rt_probe.hpp), armed around the servo-thread calls only:
 //   ComponentCore::update (the component's real-time logic, planning on acceptance included),
-//   Planner::add and tick, TpCore's servo-thread calls (firtp_tp's tpRunCycle, tpAdd*, tpPause ...),
+//   Planner::add and update, TpCore's servo-thread calls (firtp_tp's tpRunCycle, tpAdd*, tpPause ...),
 //   and firtp.update itself in firtp.so, run by hal-shim's servo thread (stepped, and on the
 //   real-time clock while the host and the bridge stream over LCM in another thread).
 #include "random_operation.hpp"
@@ -27,6 +27,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace firtp;
@@ -155,21 +156,24 @@ INSTANTIATE_TEST_SUITE_P(Machines, ComponentRealTime, ::testing::Values(true, fa
 // the limits and with the paper's fixed chain.
 class PlannerRealTime : public ::testing::TestWithParam<bool> {};
 
-TEST_P(PlannerRealTime, AddAndTickNeitherAllocateNorLock) {
+TEST_P(PlannerRealTime, AddAndUpdateNeitherAllocateNorLock) {
+    static_assert(noexcept(std::declval<Planner&>().update(PlannerInput{}, std::declval<PlannerOutput&>())));
     PlannerParameters p = test::operation_settings(GetParam()).planner;
     p.queue_capacity = 64;
     Planner planner(p, AxisVector::Zero());
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Totals totals;
-    AxisState state;
+    PlannerInput input;
+    PlannerOutput output;
     AxisVector target = AxisVector::Zero();
     int aborts = 0, bursts = 0, ends = 0;
     bool aborting = false;
+    Result motion = Result::finished;
     for (int k = 0; k < 600'000; ++k) {
         rt_probe::arm();
-        if (!aborting && planner.idle()) {  // at rest: exactly on the last target; the next burst
-            ASSERT_EQ(state.position, target);
+        if (!aborting && motion == Result::finished) {  // at rest: exactly on the last target; the next burst
+            ASSERT_EQ(output.state.position, target);
             ends += bursts > 0;
             ++bursts;
             const int n = 1 + static_cast<int>(unit(rng) * 40);
@@ -181,21 +185,23 @@ TEST_P(PlannerRealTime, AddAndTickNeitherAllocateNorLock) {
                 ASSERT_EQ(planner.add(b), Result::ok);
                 target = b.target;
             }
-            planner.finish();
+            input.end_of_program = true;
         }
         const double u = unit(rng);
-        if (!aborting && u < 0.001) planner.set_rate(u < 0.0002 ? 0.0 : 0.3 + 1.2 * unit(rng));
+        if (!aborting && u < 0.001) {
+            input.hold = u < 0.0002;
+            input.rate = 0.3 + 1.2 * unit(rng);
+        }
         if (!aborting && u > 0.9998 && !planner.idle()) planner.abort(), aborting = true, ++aborts;
-        planner.tick(state);
-        const bool flushed = planner.take_flushed();
+        motion = planner.update(input, output);
         totals.add(rt_probe::disarm());
-        if (flushed) {  // stopped on the path, everything dropped: plan from there
+        if (output.flushed) {  // stopped on the path, everything dropped: plan from there
             target = planner.rest_position();
-            planner.set_rate(1.0);
+            input = PlannerInput{};
             aborting = false;
         }
     }
-    expect_clean(totals, "Planner::add and Planner::tick");
+    expect_clean(totals, "Planner::add and Planner::update");
     std::printf("  %d bursts of blocks ended exactly on their target, %d aborts\n", ends, aborts);
     EXPECT_GT(aborts, 10);
     EXPECT_GT(ends, 100);

@@ -507,7 +507,7 @@ void Lookahead::forward(std::size_t from) {
 Result Lookahead::add(const Block& block) {
     const AxisVector delta = block.target - goal_;
     const double length = delta.norm();
-    if (length < min_block_length) return Result::ok;
+    if (length < min_block_length) return Result::skipped;
     if (count_ >= capacity_) return Result::queue_full;
     Segment s;
     s.start = goal_;

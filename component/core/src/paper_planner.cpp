@@ -207,7 +207,7 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
 Result PaperPlanner::add(const Block& block) {
     const AxisVector delta = block.target - last_.end;
     const double length = delta.norm();
-    if (length < min_block_length) return Result::ok;
+    if (length < min_block_length) return Result::skipped;
     // The pulse must fit the servo clock (int64 ticks): a feed of 1e-300, or a length that
     // overflows, gives Tv = inf, which would be converted to a tick count (undefined behaviour).
     if (!(length / block.feed <= longest_pulse(parameters_.period))) return Result::invalid_block;
@@ -224,7 +224,7 @@ Result PaperPlanner::add(const Block& block) {
     Start start{now, 0.0, 0.0};  // from rest: at once
     auto refuse = [&] {  // nothing committed: the tool rests at the previous block's end, as checked
         ++stats_.refused;
-        return Result::invalid_block;
+        return Result::infeasible;
     };
     if (!last_.moving && check_limits_) {
         // Even alone a pulse can break a limit: shorter than T1 - T2, it doubles the jerk F / (T1 T2).

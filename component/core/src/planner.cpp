@@ -58,21 +58,28 @@ Result Planner::add(const Block& block) {
         return Result::invalid_block;
     }
     if (aborting_) return Result::queue_full;
-    const AxisVector before = goal();
+    const AxisVector& from = goal();
     if (!paper_)  // an axis without an acceleration limit is one the machine does not have
         for (int a = 0; a < max_axes; ++a)
             if (!(a < parameters_.limits.axes && parameters_.limits.axis[a].max_acceleration > 0.0) &&
-                block.target[a] != before[a]) {
+                block.target[a] != from[a]) {
                 refusal_ = absent_axis_names[a];
-                return Result::invalid_block;
+                return Result::absent_axis;
             }
-    const std::uint64_t refused = stats().refused;
     const Result r = paper_ ? paper_->add(block) : lookahead_->add(block);
-    if (r == Result::ok && goal() != before) ++accepted_;
-    if (r == Result::invalid_block)
-        refusal_ = stats().refused > refused ? "no feed, down to a stop, keeps this block within its tolerance and the axis limits"
-                                             : "invalid block";
+    if (r == Result::ok) ++accepted_;
+    if (r == Result::invalid_block) refusal_ = "invalid block";
+    if (r == Result::infeasible)
+        refusal_ = "no feed, down to a stop, keeps this block within its tolerance and the axis limits";
     return r;
+}
+
+Result Planner::update(const PlannerInput& in, PlannerOutput& out) noexcept {
+    set_rate(in.hold ? 0.0 : in.rate);
+    if (in.end_of_program) finish();
+    tick(out.state);
+    out.flushed = take_flushed();
+    return idle() ? Result::finished : Result::working;
 }
 
 void Planner::finish() {

@@ -11,22 +11,22 @@ StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const Ax
                                    std::span<const Block> blocks, TrajectorySink& sink) {
     Planner planner(parameters, start);
     StreamedTrajectory out;
+    PlannerInput input;
+    PlannerOutput period;
     std::size_t next = 0;
-    for (;;) {
+    for (Result motion = Result::working; motion == Result::working || next < blocks.size();) {
         for (; next < blocks.size(); ++next) {
             const Result result = planner.add(blocks[next]);
             if (result == Result::queue_full) break;
-            if (result == Result::invalid_block)
+            if (refused(result))
                 throw std::invalid_argument("line " + std::to_string(blocks[next].line) + ": " + planner.refusal());
         }
-        if (next == blocks.size()) planner.finish();
-        AxisState state;
-        planner.tick(state);
+        input.end_of_program = next == blocks.size();
+        motion = planner.update(input, period);
         ++out.samples;
-        out.cycle_time = state.time;
-        sink.sample(state);
+        out.cycle_time = period.state.time;
+        sink.sample(period.state);
         for (CornerReport r; planner.take_report(r);) sink.corner(r);
-        if (next == blocks.size() && planner.idle()) break;
     }
     out.stats = planner.stats();
     return out;

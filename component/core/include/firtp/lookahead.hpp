@@ -44,7 +44,7 @@ class Lookahead {
 public:
     Lookahead(const PlannerParameters& parameters, Timeline& timeline, const AxisVector& start);
 
-    // Validated by the caller; queue_full leaves everything as it was.
+    // Validated by the caller; queue_full leaves everything as it was; skipped: zero length.
     Result add(const Block& block);
     // No more blocks follow for now: the stop at the end is the end of the program.
     void finish() { finished_ = true; }

@@ -31,8 +31,9 @@ class PaperPlanner {
 public:
     PaperPlanner(const PlannerParameters& parameters, const FirChain& chain, Timeline& timeline, const AxisVector& start);
 
-    // Validated by the caller; queue_full leaves everything as it was. invalid_block: no feed,
-    // down to the slowest pulse the clock holds, passes the check (stats().refused).
+    // Validated by the caller; queue_full leaves everything as it was; skipped: zero length.
+    // invalid_block: the pulse does not fit the servo clock. infeasible: no feed, down to the
+    // slowest pulse the clock holds, passes the check (stats().refused).
     Result add(const Block& block);
     void reset(const AxisVector& position);
     const AxisVector& goal() const { return last_.end; }

@@ -1,5 +1,7 @@
 // firtp's planning core behind one object: blocks in, one commanded axis state per servo period
-// out. Real-time after construction: no allocation, no locks, no I/O, no exceptions.
+// out. Every user (firtp plan, the HAL component, the LinuxCNC module firtp_tp) runs the core
+// through it; nothing else wires chain, timeline and planner. Real-time after construction: no
+// allocation, no locks, no I/O, no exceptions.
 //
 // Two modes, chosen by the parameters:
 //   limit-driven (the default): every velocity change is smoothed at the machine's own limits
@@ -7,12 +9,14 @@
 //     a look-ahead plans speeds so the tool can always stop in time (lookahead.hpp);
 //   the paper's fixed chain ([FIRTP]T1..T4 or MODES): one chain for every block and the
 //     overlap Tk of Sencer et al. 2015 at each corner (paper_planner.hpp).
-// Both write legs to one timeline (timeline.hpp), which the servo tick evaluates.
+// Both write legs to one timeline (timeline.hpp), which the servo period evaluates.
 //
 //     Planner planner(parameters, start);
-//     planner.add(block);          // as blocks come; Result::queue_full: try again later
-//     planner.finish();            // the program ends here (or the stream stalled)
-//     planner.tick(state);         // every servo period
+//     planner.add(block);              // as blocks come; Result::queue_full: try again later
+//     PlannerInput in;                 // feed override, hold, end of the program
+//     PlannerOutput out;
+//     planner.update(in, out);         // every servo period: Result::working or finished
+// examples/api/01_corner.cpp shows it whole.
 #pragma once
 
 #include <firtp/fir_chain.hpp>
@@ -28,6 +32,19 @@
 
 namespace firtp {
 
+// What a servo period asks of the planner.
+struct PlannerInput {
+    double rate = 1.0;            // feed override, 0 .. max_rate (1 = as programmed)
+    bool hold = false;            // stop on the path as soon as the limits allow (rate 0)
+    bool end_of_program = false;  // no more blocks follow for now: the last one ends the motion
+};
+
+// What it gives back.
+struct PlannerOutput {
+    AxisState state;       // the commanded axes at this period
+    bool flushed = false;  // an abort came to rest in this period (or was asked while at rest)
+};
+
 class Planner {
 public:
     // Throws std::invalid_argument for parameters that cannot work (init only).
@@ -36,19 +53,24 @@ public:
     Planner& operator=(const Planner&) = delete;
     ~Planner();
 
-    // Validates and queues one block: invalid_block for a NaN, an infinite or non-positive feed
-    // or a bad tolerance (nothing changes), and in the paper's mode when no feed passes the check
-    // (stats().refused); queue_full leaves everything as it was. A zero-length block is skipped.
+    // Validates and queues one block: ok, skipped (zero length), queue_full (nothing changes), or
+    // refused (nothing changes): invalid_block, absent_axis or infeasible (types.hpp).
     Result add(const Block& block);
-    // Why the last add() returned invalid_block, in words.
+    // Why the last add() refused its block, in words (names the axis of absent_axis).
     const char* refusal() const { return refusal_; }
-    // No more blocks follow for now: the last one ends the motion.
+
+    // One servo period: applies the input (as set_rate and finish), settles what starts now and
+    // writes the state at this period. working while anything moves or waits, else finished.
+    Result update(const PlannerInput& in, PlannerOutput& out) noexcept;
+
+    // No more blocks follow for now: the last one ends the motion (update's end_of_program).
     void finish();
-    // One servo period: settle what starts now, then the state at this period.
+    // One servo period without input (update does this after applying its input).
     void tick(AxisState& out);
 
     // Feed override (0 = hold: stop on the path as soon as the limits allow; 1 = as programmed, up
-    // to max_rate).
+    // to max_rate). Blocks added after it are planned at it: a caller that learns the rate at the
+    // start of a period and adds blocks before update() sets it first (update's is then no change).
     void set_rate(double rate);
     // Stop on the path, then drop everything; take_flushed() says when it came to rest.
     void abort();

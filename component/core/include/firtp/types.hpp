@@ -42,10 +42,22 @@ struct AxisState {
     std::int64_t line = 0;  // line of the newest block that has started moving (0 when idle)
 };
 
+// What Planner::add and Planner::update return. Negative: the block is refused and nothing changed;
+// why, in words, is Planner::refusal().
 enum class Result : int {
-    ok = 0,
-    queue_full = 1,     // try again after some ticks
-    invalid_block = -1, // NaN, infinite or non-positive feed, bad tolerance
+    ok = 0,              // add: queued
+    queue_full = 1,      // add: nothing changed; try again after some periods
+    skipped = 2,         // add: shorter than min_block_length, nothing to plan (the goal stays)
+    working = 3,         // update: moving, or blocks wait
+    finished = 4,        // update: at rest and nothing waits
+    invalid_block = -1,  // a value that cannot work: NaN, infinite or non-positive feed, bad
+                         // tolerance, a pulse L / F longer than the servo clock counts
+    absent_axis = -2,    // moves an axis the machine does not have (no acceleration limit)
+    infeasible = -3,     // the paper's chain: no feed, down to a stop, keeps the block within its
+                         // tolerance and the axis limits
 };
+
+// The block was refused (add): it must not run.
+constexpr bool refused(Result r) { return static_cast<int>(r) < 0; }
 
 }  // namespace firtp
