@@ -15,8 +15,8 @@
 namespace firtp {
 
 // Blocks a program may expand to (an arc: one a chord) unless [FIRTP]MAX_PROGRAM_BLOCKS says
-// otherwise: 10x the 10^6-block programs the benchmarks plan. 112 bytes a block: 1.1 GB, 1.8 GB
-// peak (measured) while the vector grows.
+// otherwise: 10x the 10^6-block programs the benchmarks plan. 120 bytes a block: 1.2 GB (1.8 GB
+// peak measured while the vector grew, at 112 bytes a block before Block::dwell).
 constexpr std::size_t default_max_program_blocks = 10'000'000;
 
 struct MachineConfig {
