@@ -123,6 +123,7 @@ bool ComponentCore::accept_event(const stream::BlockRecord& record) {
         fail(ComponentError::queue_full);
         return false;
     }
+    if (event.code == EventCode::program_end) planner_.finish();  // no block follows: the last one ends the motion
     if (record.seq != 0) ++next_seq_;
     return true;
 }

@@ -4,6 +4,9 @@
 // FIRTP_EVENT_REACHED when motion reaches it; a dwell rests its length.
 #include "chain_fixture.hpp"
 
+#include <firtp/gcode.hpp>
+#include <firtp/host.hpp>
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -112,4 +115,34 @@ TEST(EventMessages, AToolChangeWaitsForToolChangedWhichTheChainLoopsBack) {
     EXPECT_EQ(chain.status().next_seq, 4);
     ASSERT_EQ(chain.reached.size(), 1u);
     EXPECT_EQ(chain.position()[1], 10.0);  // tool-change => tool-changed: motion went on
+}
+
+// End to end: the host sends a program's events between its blocks; the dwell rests its length,
+// each event is reached once, in order, and the host sees the program done.
+TEST(EventMessages, TheHostSendsTheProgramsEventsBetweenItsBlocks) {
+    EventChain chain;
+    const Program program =
+        parse_gcode("G21 G90\nG1 F6000 X10\nG4 P0.3\nM8\nT2 M6\nG1 Y10\nM2\n", "events.ngc", default_machine());
+    ASSERT_EQ(program.events.size(), 6u);  // dwell, flood, tool select, tool change, coolant off (M2), end
+    host::HostOptions options;
+    options.program_id = 9;
+    std::int64_t periods = 0;
+    options.clock = [&periods] { return host::Clock::time_point(std::chrono::milliseconds(periods)); };
+    host::Host host(*chain.lcm, program, options);
+    for (; periods < 5000 && host.result() == host::Result::running; ++periods) {
+        host.step();
+        chain.run(1);
+    }
+    ASSERT_EQ(host.result(), host::Result::done) << host.error();
+    EXPECT_EQ(host.statistics().events_published, 6);
+    EXPECT_EQ(host.statistics().blocks_published, 2);
+    ASSERT_EQ(chain.reached.size(), 6u);
+    // seq 1 X10, 2 dwell, 3 M8, 4 T2, 5 M6, 6 Y10, 7 M9 (of M2), 8 end: each event once, in order.
+    const std::int64_t expected[] = {2, 3, 4, 5, 7, 8};
+    for (std::size_t i = 0; i < chain.reached.size(); ++i) EXPECT_EQ(chain.reached[i].seq, expected[i]);
+    EXPECT_EQ(chain.reached[0].kind, firtp_lcm::event_t::DWELL);
+    EXPECT_EQ(chain.reached[5].kind, firtp_lcm::event_t::PROGRAM_END);
+    const double rest = chain.rest_at(10, 0);
+    EXPECT_GE(rest, 0.3);
+    EXPECT_LE(rest, 0.3 + 0.005);  // the tool change's handshake adds a period or two
 }
