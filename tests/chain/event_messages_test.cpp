@@ -136,6 +136,7 @@ TEST(EventMessages, TheHostSendsTheProgramsEventsBetweenItsBlocks) {
     ASSERT_EQ(host.result(), host::Result::done) << host.error();
     EXPECT_EQ(host.statistics().events_published, 6);
     EXPECT_EQ(host.statistics().blocks_published, 2);
+    EXPECT_EQ(host.statistics().events_reached, 6);
     ASSERT_EQ(chain.reached.size(), 6u);
     // seq 1 X10, 2 dwell, 3 M8, 4 T2, 5 M6, 6 Y10, 7 M9 (of M2), 8 end: each event once, in order.
     const std::int64_t expected[] = {2, 3, 4, 5, 7, 8};

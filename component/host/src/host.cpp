@@ -122,6 +122,15 @@ struct Host::State {
         axes.on_message(received.message);
     }
 
+    void on_reached_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto received = messages::receive<firtp_lcm::event_t>(buffer->data, buffer->data_size);
+        if (received.problem) {
+            ++statistics.corrupted_dropped;
+            return;
+        }
+        if (received.message.program == program_id) ++statistics.events_reached;
+    }
+
     void on_status(const status_t* status) {
         const Clock::time_point t = now();
         ++statistics.statuses;
@@ -208,6 +217,7 @@ struct Host::State {
     StatusWatch watch;
     lcm::Subscription* status_subscription = nullptr;
     lcm::Subscription* axis_subscription = nullptr;
+    lcm::Subscription* reached_subscription = nullptr;
     Result result = Result::running;
     std::string error;
     Statistics statistics;
@@ -228,11 +238,14 @@ Host::Host(lcm::LCM& lcm, const Program& program, HostOptions options)
     messages::keep_everything(s.status_subscription);
     s.axis_subscription = lcm.subscribe(messages::axis_state_channel, &State::on_axis_state_bytes, &s);
     messages::keep_everything(s.axis_subscription);
+    s.reached_subscription = lcm.subscribe(messages::event_reached_channel, &State::on_reached_bytes, &s);
+    messages::keep_everything(s.reached_subscription);
 }
 
 Host::~Host() {
     state_->lcm.unsubscribe(state_->status_subscription);
     state_->lcm.unsubscribe(state_->axis_subscription);
+    state_->lcm.unsubscribe(state_->reached_subscription);
 }
 
 Result Host::step() {

@@ -64,6 +64,7 @@ struct Progress {
 struct Statistics {
     std::int64_t blocks_published = 0;  // including resends
     std::int64_t events_published = 0;  // program events (event_t), likewise
+    std::int64_t events_reached = 0;    // of this program's events: reached by the motion (FIRTP_EVENT_REACHED)
     std::int64_t go_backs = 0;          // go-back-N resends
     std::int64_t rejected = 0;          // blocks the component refused while this host ran
     std::int64_t corrupted_refused = 0; // of those and of the controls: refused as corrupted (bad crc)
