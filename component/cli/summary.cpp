@@ -43,16 +43,20 @@ std::string axis_max(const AxisVector& v, int decimals) {
 // program has, only in the JSON).
 void print_events(std::ostream& out, const Program& program) {
     std::array<std::size_t, event_kinds> count{};
-    double dwell = 0.0;
+    double dwell = 0.0, after_last = 0.0;  // a dwell after the last move has no block to delay
     for (const ProgramEvent& e : program.events) {
         ++count[static_cast<std::size_t>(e.kind)];
-        if (e.kind == EventKind::dwell) dwell += e.value;
+        if (e.kind == EventKind::dwell) (e.before_block < program.blocks.size() ? dwell : after_last) += e.value;
     }
     for (std::size_t k = 0; k < count.size(); ++k) {
         const auto kind = static_cast<EventKind>(k);
         if (count[k] == 0 || kind == EventKind::program_end) continue;
         out << "event        " << event_name(kind) << " x" << count[k];
-        if (kind == EventKind::dwell) out << " (" << fixed_text(dwell, 3) << " s, not in the cycle time)";
+        if (kind == EventKind::dwell) {
+            out << " (" << fixed_text(dwell, 3) << " s at rest, in the cycle time";
+            if (after_last > 0.0) out << "; " << fixed_text(after_last, 3) << " s after the last move, not";
+            out << ")";
+        }
         out << (event_waits(kind) ? ", motion stops before it\n" : "\n");
     }
 }

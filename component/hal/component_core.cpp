@@ -33,6 +33,7 @@ void ComponentCore::fail(ComponentError error) {
     error_ = error;
     halted_ = unchecked_halted_ = true;
     ++rejected_;
+    events_.clear(event_state_);
     if (!planner_.idle()) {
         planner_.abort();  // stop on the path; the rest of the program must not run
         aborting_ = true;
@@ -41,6 +42,7 @@ void ComponentCore::fail(ComponentError error) {
 
 void ComponentCore::drop_everything(const AxisVector& at) {
     planner_.reset(at);
+    events_.clear(event_state_);
     aborting_ = false;
     halted_ = unchecked_halted_ = true;  // the interrupted program must not continue from here
 }
@@ -78,6 +80,7 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
         next_seq_ = 1;
         halted_ = false;
         error_ = ComponentError::none;
+        events_.new_program(event_state_);
     }
     if (record.seq == 0 ? unchecked_halted_ : halted_) {  // the rest of a program that was stopped
         ++rejected_;
@@ -96,7 +99,9 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
         fail(ComponentError::bad_type);
         return false;
     }
+    if (record.is_event) return accept_event(record);
     Block block = record.block;
+    block.dwell += events_.take_dwell();
     if (!from_stream && block.termination == Termination::blend && block.tolerance == 0.0)
         block.tolerance = settings_.default_tolerance;
     // The caller made room: only bad values are refused.
@@ -104,6 +109,22 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
         fail(ComponentError::bad_value);
         return false;
     }
+    if (record.seq != 0) ++next_seq_;
+    return true;
+}
+
+bool ComponentCore::accept_event(const stream::BlockRecord& record) {
+    const Event event{static_cast<EventCode>(record.event_code), record.event_value, record.block.line,
+                      planner_.accepted()};
+    if (!std::isfinite(event.value) || (event.code == EventCode::dwell && !(event.value >= 0.0 && event.value <= max_dwell))) {
+        fail(ComponentError::bad_value);
+        return false;
+    }
+    if (!events_.push(event)) {  // the caller made room
+        fail(ComponentError::queue_full);
+        return false;
+    }
+    if (event.code == EventCode::program_end) planner_.finish();  // no block follows: the last one ends the motion
     if (record.seq != 0) ++next_seq_;
     return true;
 }
@@ -144,11 +165,11 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
 
         if (in.abort || aborting_ || braking_now_) {  // refuse the rest of a stopped program
             refuse_inputs(in, source);
-            if (in.abort) halted_ = unchecked_halted_ = true;
+            if (in.abort) halted_ = unchecked_halted_ = true, events_.clear(event_state_);
         } else {
             if (!in.strobe) {
                 ack_ = false;
-            } else if (!ack_ && planner_.free() > 0) {  // a full queue makes the feeder wait
+            } else if (!ack_ && may_read()) {  // a full queue or a wait makes the feeder wait
                 stream::BlockRecord pin = in.pin_block;
                 pin.type_known = in.pin_motion_type == 1 || in.pin_motion_type == 2;
                 pin.block.type = in.pin_motion_type == 1 ? MotionType::traverse : MotionType::feed;
@@ -159,14 +180,15 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
             const bool budgeted = settings_.plan_budget_ns > 0 && settings_.clock_ns != nullptr;
             const std::int64_t begin = budgeted ? settings_.clock_ns() : 0;
             stream::BlockRecord record;
-            for (int k = 0; k < settings_.max_blocks_per_period && planner_.free() > 0 &&
+            for (int k = 0; k < settings_.max_blocks_per_period && may_read() &&
                             (k == 0 || !budgeted || settings_.clock_ns() - begin < settings_.plan_budget_ns) &&
                             next_record(source, record);
                  ++k)
                 accept(record, true);
         }
         planner_.update(motion, last_);
-        if (last_.flushed) aborting_ = false;  // at rest: the planner starts there
+        if (last_.flushed) aborting_ = false, events_.clear(event_state_);  // at rest: the planner starts there
+        else events_.update(planner_.finished(), planner_.idle(), in.events, event_state_);
         if (braking_now_ && planner_.idle()) braking_now_ = false;
     }
     if (abort_pin_ && !in.abort) unchecked_halted_ = false;  // abort fell: the operator's reset
@@ -189,6 +211,7 @@ void ComponentCore::update(const ComponentInputs& in, BlockSource source, Compon
     out.program = program_;
     out.next_seq = next_seq_;
     out.rejected = rejected_;
+    out.events = event_state_;
 }
 
 }  // namespace firtp

@@ -19,6 +19,7 @@
 #include <firtp/planner.hpp>
 #include <firtp/types.hpp>
 
+#include "event_queue.hpp"
 #include "stream_records.hpp"
 
 #include <cstdint>
@@ -52,6 +53,7 @@ struct ComponentInputs {
     std::int32_t pin_motion_type = 2;
     AxisVector position_feedback = AxisVector::Zero();  // where the axes are (pos-fb)
     AxisVector velocity_feedback = AxisVector::Zero();  // how fast they move (vel-fb)
+    EventInputs events;                  // tool-changed, resume, optional-stop
 };
 
 struct ComponentOutputs {
@@ -66,6 +68,7 @@ struct ComponentOutputs {
     std::uint64_t program = 0;           // the pins show the low 32 bits
     std::uint64_t next_seq = 1;
     std::uint32_t rejected = 0;
+    EventOutputs events;                 // what the program events reached so far set
 };
 
 // Where stream records come from: returns false when none is waiting.
@@ -88,6 +91,8 @@ public:
 private:
     // Checks and plans one block; false (and the error latched) when it must not run.
     bool accept(const stream::BlockRecord& record, bool from_stream);
+    bool accept_event(const stream::BlockRecord& record);  // queued after the blocks accepted so far
+    bool may_read() const { return planner_.free() > 0 && events_.free() > 0 && !events_.gated(); }
     int refuse_inputs(const ComponentInputs& in, BlockSource source);  // counts what it refused
     void fail(ComponentError error);
     void drop_everything(const AxisVector& at);
@@ -97,6 +102,8 @@ private:
 
     ComponentSettings settings_;
     Planner planner_;
+    EventQueue events_;                   // beside the planner's blocks (event_queue.hpp)
+    EventOutputs event_state_;
     BrakingPeaks braking_;                // the paper's mode: how much of a velocity its chain can stop
     PlannerOutput last_{};               // the planner's output at the last period
     bool started_ = false;

@@ -25,6 +25,7 @@
 
 #include "component_core.hpp"
 #include "module_number.hpp"
+#include "pin_table.hpp"
 #include "hal_pin_access.hpp"
 #include "stream_records.hpp"
 
@@ -88,46 +89,18 @@ RTAPI_MP_STRING(brake_speed, "vel-fb speed, units/s, above which a start or enab
 
 namespace {
 
+// The pins, from pin_table.hpp.
+#define FIRTP_PIN_MEMBER(member, name, type, direction, doc) hal_##type##_t* member;
 struct AxisPins {
-    hal_float_t* pos_cmd;  // out: commanded position
-    hal_float_t* vel_cmd;  // out: commanded velocity
-    hal_float_t* acc_cmd;  // out: commanded acceleration
-    hal_float_t* pos_fb;   // in: actual position, followed while disabled
-    hal_float_t* vel_fb;   // in: actual velocity, braked from at a start while moving
+    FIRTP_AXIS_PINS(FIRTP_PIN_MEMBER)
 };
 
 struct Pins {
     AxisPins axis[firtp::max_axes];
-    // one block, strobe/ack handshake
-    hal_float_t* block_target[firtp::max_axes];  // in: absolute end point
-    hal_float_t* block_feed;                       // in: path speed, units/s
-    hal_float_t* block_tolerance;                  // in: corner tolerance, 0 = default
-    hal_s32_t* block_motion_type;                  // in: 1 traverse, 2 feed
-    hal_bit_t* block_exact_stop;                   // in: stop at the end of this block
-    hal_s32_t* block_line;                         // in: source line
-    hal_u32_t* block_program;                      // in: program id (with seq)
-    hal_u32_t* block_seq;                          // in: 1, 2, ... (0: not checked)
-    hal_bit_t* block_strobe;                       // in: raise when the block pins are set
-    hal_bit_t* block_ack;                          // out: follows strobe once the block was taken
-    // status
-    hal_bit_t* busy;                               // out: blocks queued or moving
-    hal_bit_t* done;                               // out: nothing left to do
-    hal_s32_t* queue_depth;                        // out: blocks not finished
-    hal_s32_t* queue_free;                         // out: blocks that can still be taken
-    hal_s32_t* current_line;                       // out: line of the moving block
-    hal_s32_t* state;                              // out: 0 idle 1 moving 2 holding 3 aborting 4 error 5 disabled
-    hal_s32_t* error_code;                         // out: latest error, 0 none (firtp_lcm::status_t codes)
-    hal_u32_t* program;                            // out: program being accepted
-    hal_u32_t* next_seq;                           // out: seq expected next
-    hal_u32_t* rejected;                           // out: blocks refused so far
-    hal_u32_t* tick;                               // out: periods run
-    hal_u32_t* state_overruns;                     // out: axis states lost to a full stream
-    // control
-    hal_bit_t* enable;                             // in: off = stop at once and drop everything
-    hal_float_t* feed_scale;                       // in: feed override (1 = programmed)
-    hal_bit_t* hold;                               // in: stop on the path and wait
-    hal_bit_t* abort;                              // in: stop on the path and drop the program
+    hal_float_t* block_target[firtp::max_axes];
+    FIRTP_PINS(FIRTP_PIN_MEMBER)
 };
+#undef FIRTP_PIN_MEMBER
 
 // The load-time settings as read-only HAL params (halcmd show param firtp), as in effect: after
 // the defaults and checks of settings_from_parameters.
@@ -193,6 +166,9 @@ void update(void*, long) {
     in.pin_block.program = pin::get(pins->block_program);
     in.pin_block.seq = pin::get(pins->block_seq);
     in.pin_motion_type = pin::get(pins->block_motion_type);
+    in.events.tool_changed = pin::get(pins->tool_changed);
+    in.events.resume = pin::get(pins->resume);
+    in.events.optional_stop = pin::get(pins->optional_stop);
     for (int a = 0; a < axes; ++a) {
         in.position_feedback[a] = pin::get(pins->axis[a].pos_fb);
         in.velocity_feedback[a] = pin::get(pins->axis[a].vel_fb);
@@ -217,6 +193,19 @@ void update(void*, long) {
     pin::set(pins->program, static_cast<std::uint32_t>(out.program));  // low 32 bits
     pin::set(pins->next_seq, static_cast<std::uint32_t>(out.next_seq));
     pin::set(pins->rejected, out.rejected);
+    const firtp::EventOutputs& e = out.events;
+    pin::set(pins->spindle_on, e.spindle_on);
+    pin::set(pins->spindle_forward, e.spindle_forward);
+    pin::set(pins->spindle_reverse, e.spindle_reverse);
+    pin::set(pins->spindle_speed_out, e.spindle_speed);
+    pin::set(pins->coolant_flood, e.coolant_flood);
+    pin::set(pins->coolant_mist, e.coolant_mist);
+    pin::set(pins->tool_prep_number, e.tool_prep_number);
+    pin::set(pins->tool_number, e.tool_number);
+    pin::set(pins->tool_change, e.tool_change);
+    pin::set(pins->paused, e.paused);
+    pin::set(pins->program_end, e.program_end);
+    pin::set(pins->events, e.events);
     if (has_state_stream) {
         hal_stream_data record[firtp::stream::state_elements];
         bool lost = false;  // a period's records go whole or not at all: one axis state lost
@@ -270,41 +259,23 @@ void read_limits(const char* name, const char* text, double firtp::AxisLimits::*
 
 int make_pins() {
     int r = 0;
+#define FIRTP_AXIS_PIN(member, name, type, direction, doc) \
+    r = r ? r : hal_pin_##type##_newf(HAL_##direction, &pins->axis[a].member, comp_id, "firtp." name, a);
     for (int a = 0; a < axes && r == 0; ++a) {
-        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].pos_cmd, comp_id, "firtp.axis.%d.pos-cmd", a);
-        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].vel_cmd, comp_id, "firtp.axis.%d.vel-cmd", a);
-        r = r ? r : hal_pin_float_newf(HAL_OUT, &pins->axis[a].acc_cmd, comp_id, "firtp.axis.%d.acc-cmd", a);
-        r = r ? r : hal_pin_float_newf(HAL_IN, &pins->axis[a].pos_fb, comp_id, "firtp.axis.%d.pos-fb", a);
-        r = r ? r : hal_pin_float_newf(HAL_IN, &pins->axis[a].vel_fb, comp_id, "firtp.axis.%d.vel-fb", a);
+        FIRTP_AXIS_PINS(FIRTP_AXIS_PIN)
     }
-    for (int a = 0; a < firtp::max_axes && r == 0; ++a)  // unused axes keep their storage, set to 0
-        if (a < axes) r = hal_pin_float_newf(HAL_IN, &pins->block_target[a], comp_id, "firtp.block.target.%d", a);
-        else pins->block_target[a] = static_cast<hal_float_t*>(hal_malloc(sizeof(hal_float_t)));
-    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->block_feed, comp_id, "firtp.block.feed");
-    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->block_tolerance, comp_id, "firtp.block.tolerance");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins->block_motion_type, comp_id, "firtp.block.motion-type");
-    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->block_exact_stop, comp_id, "firtp.block.exact-stop");
-    r = r ? r : hal_pin_s32_newf(HAL_IN, &pins->block_line, comp_id, "firtp.block.line");
-    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins->block_program, comp_id, "firtp.block.program");
-    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins->block_seq, comp_id, "firtp.block.seq");
-    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->block_strobe, comp_id, "firtp.block.strobe");
-    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->block_ack, comp_id, "firtp.block.ack");
-    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->busy, comp_id, "firtp.busy");
-    r = r ? r : hal_pin_bit_newf(HAL_OUT, &pins->done, comp_id, "firtp.done");
-    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->queue_depth, comp_id, "firtp.queue-depth");
-    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->queue_free, comp_id, "firtp.queue-free");
-    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->current_line, comp_id, "firtp.current-line");
-    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->state, comp_id, "firtp.state");
-    r = r ? r : hal_pin_s32_newf(HAL_OUT, &pins->error_code, comp_id, "firtp.error-code");
-    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->program, comp_id, "firtp.program");
-    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->next_seq, comp_id, "firtp.next-seq");
-    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->rejected, comp_id, "firtp.rejected");
-    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->tick, comp_id, "firtp.tick");
-    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins->state_overruns, comp_id, "firtp.state-overruns");
-    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->enable, comp_id, "firtp.enable");
-    r = r ? r : hal_pin_float_newf(HAL_IN, &pins->feed_scale, comp_id, "firtp.feed-scale");
-    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->hold, comp_id, "firtp.hold");
-    r = r ? r : hal_pin_bit_newf(HAL_IN, &pins->abort, comp_id, "firtp.abort");
+#undef FIRTP_AXIS_PIN
+#define FIRTP_TARGET_PIN(member, name, type, direction, doc)                                          \
+    if (a < axes) r = hal_pin_##type##_newf(HAL_##direction, &pins->member[a], comp_id, "firtp." name, a); \
+    else pins->member[a] = static_cast<hal_##type##_t*>(hal_malloc(sizeof(hal_##type##_t)));
+    for (int a = 0; a < firtp::max_axes && r == 0; ++a) {  // unused axes keep their storage, set to 0
+        FIRTP_TARGET_PINS(FIRTP_TARGET_PIN)
+    }
+#undef FIRTP_TARGET_PIN
+#define FIRTP_PIN(member, name, type, direction, doc) \
+    r = r ? r : hal_pin_##type##_newf(HAL_##direction, &pins->member, comp_id, "firtp." name);
+    FIRTP_PINS(FIRTP_PIN)
+#undef FIRTP_PIN
     if (r == 0) {
         *pins->feed_scale = 1.0;
         *pins->block_motion_type = 2;

@@ -8,6 +8,8 @@
 
 #include <firtp/types.hpp>
 
+#include "event_queue.hpp"
+
 #include <cstdint>
 
 namespace firtp::stream {
@@ -16,28 +18,33 @@ inline constexpr int default_block_key = 0x46495242;  // "FIRB"
 inline constexpr int default_state_key = 0x46495253;  // "FIRS"
 
 // target[9], feed, tolerance, line, motion type, termination, program and seq (64 bits as in
-// block_t, each as low and high 32-bit halves)
-inline constexpr const char* block_types = "fffffffffffsssuuuu";
-inline constexpr int block_elements = 18;
+// block_t, each as low and high 32-bit halves), record kind (0 block, 1 event). An event (event_t)
+// has its code in the motion type's place, its value in the feed's and its line.
+inline constexpr const char* block_types = "fffffffffffsssuuuus";
+inline constexpr int block_elements = 19;
 
 struct BlockRecord {
     Block block;
     std::uint64_t program = 0;
     std::uint64_t seq = 0;       // 0 on the pins: not checked
-    bool type_known = true;      // motion type and termination were valid codes
+    bool type_known = true;      // motion type and termination were valid codes (an event: its code)
+    bool is_event = false;       // a program event between blocks, not a block
+    std::int32_t event_code = 0; // firtp::EventCode
+    double event_value = 0.0;
 };
 
 inline void pack(const BlockRecord& r, hal_stream_data* out) {
     for (int a = 0; a < max_axes; ++a) out[a].f = r.block.target[a];
-    out[9].f = r.block.feed;
     out[10].f = r.block.tolerance;
+    out[9].f = r.is_event ? r.event_value : r.block.feed;
     out[11].s = static_cast<std::int32_t>(r.block.line);
-    out[12].s = static_cast<std::int32_t>(r.block.type);
+    out[12].s = r.is_event ? r.event_code : static_cast<std::int32_t>(r.block.type);
     out[13].s = r.block.termination == Termination::blend ? 1 : 0;
     out[14].u = static_cast<std::uint32_t>(r.program);
     out[15].u = static_cast<std::uint32_t>(r.program >> 32);
     out[16].u = static_cast<std::uint32_t>(r.seq);
     out[17].u = static_cast<std::uint32_t>(r.seq >> 32);
+    out[18].s = r.is_event ? 1 : 0;
 }
 
 // Sets type_known false when the motion type or termination is not a known code.
@@ -49,7 +56,10 @@ inline void unpack(const hal_stream_data* in, BlockRecord& r) {
     const std::int32_t type = in[12].s, termination = in[13].s;
     r.program = std::uint64_t{in[14].u} | std::uint64_t{in[15].u} << 32;
     r.seq = std::uint64_t{in[16].u} | std::uint64_t{in[17].u} << 32;
-    r.type_known = (type == 1 || type == 2) && (termination == 0 || termination == 1);
+    r.is_event = in[18].s == 1;
+    r.event_code = type;
+    r.event_value = in[9].f;
+    r.type_known = r.is_event ? type >= 0 && type < event_codes : (type == 1 || type == 2) && (termination == 0 || termination == 1);
     r.block.type = type == 1 ? MotionType::traverse : MotionType::feed;
     r.block.termination = termination == 1 ? Termination::blend : Termination::exact_stop;
 }

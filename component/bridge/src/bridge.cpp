@@ -31,7 +31,16 @@ const char* const pairs[] = {
     "firtp-bridge.abort",      "firtp.abort",            "firtp-bridge.queue-depth", "firtp.queue-depth",
     "firtp-bridge.state",      "firtp.state",            "firtp-bridge.error-code",  "firtp.error-code",
     "firtp-bridge.rejected",   "firtp.rejected",         "firtp-bridge.tick",        "firtp.tick",
-    "firtp-bridge.current-line", "firtp.current-line",   nullptr,                    nullptr};
+    "firtp-bridge.current-line", "firtp.current-line",   "firtp-bridge.events",      "firtp.events",
+    nullptr,                   nullptr};
+
+// The component's event codes are event_t's.
+static_assert(static_cast<int>(EventCode::spindle_clockwise) == firtp_lcm::event_t::SPINDLE_CLOCKWISE);
+static_assert(static_cast<int>(EventCode::tool_change) == firtp_lcm::event_t::TOOL_CHANGE);
+static_assert(static_cast<int>(EventCode::pause) == firtp_lcm::event_t::PAUSE);
+static_assert(static_cast<int>(EventCode::dwell) == firtp_lcm::event_t::DWELL);
+static_assert(static_cast<int>(EventCode::program_end) == firtp_lcm::event_t::PROGRAM_END);
+static_assert(event_codes == firtp_lcm::event_t::PROGRAM_END + 1);
 
 }  // namespace
 
@@ -45,6 +54,7 @@ struct Bridge::Pins {
     hal_u32_t* rejected;      // in
     hal_u32_t* tick;          // in
     hal_s32_t* current_line;  // in
+    hal_u32_t* events;        // in: program events the component has reached
 };
 
 struct Bridge::Streams {
@@ -74,6 +84,7 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
     r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->rejected, comp_id_, "%s.rejected", name);
     r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->tick, comp_id_, "%s.tick", name);
     r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->current_line, comp_id_, "%s.current-line", name);
+    r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->events, comp_id_, "%s.events", name);
     if (r == 0) *pins_->feed_scale = 1.0;
     r = r ? r : hal_stream_attach(&streams_->blocks, comp_id_, options.block_key, stream::block_types);
     if (r == 0 && options.state_key != 0) {
@@ -89,13 +100,16 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
     hal_ready(comp_id_);
     block_subscription_ = lcm.subscribe(messages::block_channel, &Bridge::on_block_bytes, this);
     control_subscription_ = lcm.subscribe(messages::control_channel, &Bridge::on_control_bytes, this);
+    event_subscription_ = lcm.subscribe(messages::event_channel, &Bridge::on_event_bytes, this);
     messages::keep_everything(block_subscription_);
     messages::keep_everything(control_subscription_);
+    messages::keep_everything(event_subscription_);
 }
 
 Bridge::~Bridge() {
     lcm_->unsubscribe(block_subscription_);
     lcm_->unsubscribe(control_subscription_);
+    lcm_->unsubscribe(event_subscription_);
     hal_stream_detach(&streams_->blocks);
     if (streams_->has_states) hal_stream_detach(&streams_->states);
     delete streams_;
@@ -127,6 +141,18 @@ void Bridge::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string&
            name + ": " + *received.problem + "; refused, expected seq " + std::to_string(sequence_.next_seq()));
 }
 
+// As a block: a corrupted event is refused like a lost one and resent.
+void Bridge::on_event_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    const auto received = messages::receive<firtp_lcm::event_t>(buffer->data, buffer->data_size);
+    if (!received.problem) return on_event(&received.message);
+    ++rejected_;
+    ++corrupted_;
+    const std::string name = received.decoded ? messages::describe(received.message)
+                                              : channel + " message (" + std::to_string(buffer->data_size) + " bytes)";
+    report(firtp_lcm::status_t::ERROR_CORRUPTED,
+           name + ": " + *received.problem + "; refused, expected seq " + std::to_string(sequence_.next_seq()));
+}
+
 // A corrupted control is ignored (the levels in effect stay) and reported; the host republishes
 // its controls every control period.
 void Bridge::on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
@@ -139,7 +165,6 @@ void Bridge::on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::strin
 }
 
 void Bridge::on_block(const firtp_lcm::block_t* m) {
-    using Verdict = messages::SequenceChecker::Verdict;
     if (const auto why = messages::validate(*m)) {
         ++rejected_;
         report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
@@ -147,17 +172,45 @@ void Bridge::on_block(const firtp_lcm::block_t* m) {
         hal_pin::set(pins_->abort, true);
         return;
     }
-    const Verdict verdict = sequence_.check(m->program, m->seq, component_idle());
+    if (!admit(m->program, m->seq, messages::describe(*m))) return;
+    stream::BlockRecord record;
+    record.block = messages::to_block(*m);
+    write(record, m->program, m->seq);
+}
+
+void Bridge::on_event(const firtp_lcm::event_t* m) {
+    if (const auto why = messages::validate(*m)) {
+        ++rejected_;
+        report(firtp_lcm::status_t::ERROR_BAD_VALUE, *why + "; program stopped");
+        fault_ = true;
+        hal_pin::set(pins_->abort, true);
+        return;
+    }
+    if (!admit(m->program, m->seq, messages::describe(*m))) return;
+    if (reached_ < 0) reached_ = hal_pin::get(pins_->events);
+    while (!in_flight_.empty() && in_flight_.front().program != m->program) in_flight_.pop_front();  // never reached
+    in_flight_.push_back(*m);
+    stream::BlockRecord record;
+    record.is_event = true;
+    record.event_code = m->kind;
+    record.event_value = m->value;
+    record.block.line = m->line;
+    write(record, m->program, m->seq);
+}
+
+bool Bridge::admit(std::int64_t program, std::int64_t seq, const std::string& name) {
+    using Verdict = messages::SequenceChecker::Verdict;
+    const Verdict verdict = sequence_.check(program, seq, component_idle());
     if (verdict != Verdict::accept) {
         ++rejected_;
         const std::int32_t code = verdict == Verdict::repeated
                                       ? std::int32_t{firtp_lcm::status_t::ERROR_REPEATED}
                                       : std::int32_t{firtp_lcm::status_t::ERROR_SEQUENCE_GAP};
-        report(code, messages::describe(*m) + ": " + messages::SequenceChecker::describe(verdict) + ", expected seq " +
+        report(code, name + ": " + messages::SequenceChecker::describe(verdict) + ", expected seq " +
                          std::to_string(sequence_.next_seq()));
-        return;
+        return false;
     }
-    const bool new_program = m->program != sequence_.program();
+    const bool new_program = program != sequence_.program();
     if (new_program) {
         fault_ = false;
         error_ = 0;
@@ -166,24 +219,42 @@ void Bridge::on_block(const firtp_lcm::block_t* m) {
     if (fault_ || abort_) {
         ++rejected_;
         report(firtp_lcm::status_t::ERROR_SEQUENCE_GAP,
-               messages::describe(*m) + ": refused, the program was " + (abort_ ? "aborted" : "stopped by an error"));
-        return;
+               name + ": refused, the program was " + (abort_ ? "aborted" : "stopped by an error"));
+        return false;
     }
     if (!hal_stream_writable(&streams_->blocks)) {
         ++rejected_;
-        report(firtp_lcm::status_t::ERROR_QUEUE_FULL, messages::describe(*m) + ": the block stream is full, resend");
-        return;
+        report(firtp_lcm::status_t::ERROR_QUEUE_FULL, name + ": the block stream is full, resend");
+        return false;
     }
-    stream::BlockRecord record;
-    record.block = messages::to_block(*m);
-    record.program = static_cast<std::uint64_t>(m->program);  // all 64 bits reach the component
-    record.seq = static_cast<std::uint64_t>(m->seq);
+    return true;
+}
+
+void Bridge::write(const stream::BlockRecord& admitted, std::int64_t program, std::int64_t seq) {
+    stream::BlockRecord record = admitted;
+    record.program = static_cast<std::uint64_t>(program);  // all 64 bits reach the component
+    record.seq = static_cast<std::uint64_t>(seq);
     hal_stream_data buffer[stream::block_elements];
     stream::pack(record, buffer);
     hal_pin::set(pins_->abort, false);
     hal_stream_write(&streams_->blocks, buffer);
-    sequence_.accepted(m->program, m->seq);
+    sequence_.accepted(program, seq);
     ++forwarded_;
+}
+
+// Each event the component reached since the last poll, in order, on FIRTP_EVENT_REACHED.
+void Bridge::publish_reached() {
+    if (reached_ < 0) return;
+    const std::uint32_t count = hal_pin::get(pins_->events);
+    std::uint32_t fresh = count - static_cast<std::uint32_t>(reached_);
+    reached_ = count;
+    for (; fresh > 0 && !in_flight_.empty(); --fresh) {
+        firtp_lcm::event_t m = in_flight_.front();
+        in_flight_.pop_front();
+        m.utime = messages::now_utime();
+        messages::publish(*lcm_, messages::event_reached_channel, m);
+        status_due_ = true;
+    }
 }
 
 void Bridge::on_control(const firtp_lcm::control_t* m) {
@@ -286,6 +357,7 @@ void Bridge::publish_status() {
 
 void Bridge::poll() {
     forward_states();
+    publish_reached();
     if (status_due_) publish_status();
 }
 

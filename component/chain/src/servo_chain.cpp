@@ -89,6 +89,10 @@ ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::f
         check(shim::net(cat(bridge_pin.substr(bridge_pin.find('.') + 1), "-net"), {bridge_pin, component_pin}),
               cat("net ", bridge_pin, " ", component_pin));
     }
+    // Nobody changes tools and no operator resumes here: the handshakes are looped back (a tool
+    // change and a pause take a servo period).
+    check(shim::net("tool-change-loop", {"firtp.tool-change", "firtp.tool-changed"}), "net firtp.tool-change firtp.tool-changed");
+    check(shim::net("pause-loop", {"firtp.paused", "firtp.resume"}), "net firtp.paused firtp.resume");
     check(shim::set_value("firtp.enable", "1"), "setp firtp.enable 1");
     check(shim::add_funct("firtp.update", "servo-thread"), "addf firtp.update servo-thread");
 }

@@ -102,6 +102,7 @@ void Lookahead::reset(const AxisVector& position) {
     frozen_ = Frozen{};
     finished_ = false;
     waiting_since_ = -1;
+    pending_dwell_ = 0.0;
 }
 
 // ---- Regimes and steps -------------------------------------------------------------------------
@@ -279,7 +280,9 @@ void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     s.turn = make_turn(s.u, seg(i + 1).u, limits_);
     s.learned_cap = infinity;
-    s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal ? Kind::stop : Kind::corner;
+    s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal || seg(i + 1).dwell > 0.0
+                 ? Kind::stop
+                 : Kind::corner;
     s.sparse_cap = 0.0;
     if (s.kind != Kind::stop) {
         s.sparse_cap = infinity;
@@ -490,13 +493,8 @@ void Lookahead::forward(std::size_t from) {
         } else {
             Segment& prev = seg(i - 1);
             const double exit = prev.enter + prev.x0 + prev.xp + prev.x1;
-            if (prev.kind == Kind::stop) {
-                // As next_step() starts it: a sample lands on the corner while the tool rests, so
-                // the start's kernel begins on the first sample after the stop's kernel has ended.
-                const double settled = exit + 0.5 * stop_step(i - 1).kernel.width();
-                const double first_sample = std::ceil(settled / period - 1e-9) * period;
-                prev.rest = std::max(prev.rest, first_sample + 0.5 * entry_step(i).kernel.width() - exit);
-            }
+            if (prev.kind == Kind::stop)  // as next_step() starts it
+                prev.rest = std::max(prev.rest, start_after_stop(i, exit, stop_step(i - 1), 0.5 * entry_step(i).kernel.width()) - exit);
             s.enter = exit + (prev.kind == Kind::stop ? prev.rest : 0.0);
         }
     }
@@ -507,9 +505,15 @@ void Lookahead::forward(std::size_t from) {
 Result Lookahead::add(const Block& block) {
     const AxisVector delta = block.target - goal_;
     const double length = delta.norm();
-    if (length < min_block_length) return Result::skipped;
+    if (length < min_block_length) {  // skipped; its dwell goes to the next block
+        pending_dwell_ += block.dwell;
+        return Result::skipped;
+    }
     if (count_ >= capacity_) return Result::queue_full;
     Segment s;
+    s.dwell = pending_dwell_ + block.dwell;
+    s.added = static_cast<double>(timeline_->now()) * parameters_.period;
+    pending_dwell_ = 0.0;
     s.start = goal_;
     s.end = block.target;
     s.u = delta / length;
@@ -597,6 +601,7 @@ void Lookahead::place_hold_stop() {
             const AxisVector point = s.start + s.u * at;
             rest.start = point;
             rest.length = s.length - at;
+            rest.dwell = 0.0;  // the block's dwell came before it
             s.end = point;
             s.length = at;
             s.hold_split = true;
@@ -645,8 +650,10 @@ void Lookahead::unsplit() {
         const Segment& rest = seg(i + 1);
         const double length = s.length + rest.length;
         const AxisVector start = s.start;
+        const double dwell = s.dwell;
         s = rest;
         s.start = start;
+        s.dwell = dwell;
         s.length = length;
         erase(i + 1);
         if (i + 1 < count_) link(i);

@@ -21,6 +21,13 @@ constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
 
 }  // namespace
 
+double Lookahead::start_after_stop(std::size_t i, double stop, const Step& stop_step, double half) const {
+    // A sample lands on the corner while the tool rests (and the dwell runs on the tick grid).
+    const double period = parameters_.period;
+    const double settled = stop + 0.5 * stop_step.kernel.width() + seg(i).dwell;
+    return std::ceil(settled / period - 1e-9) * period + half;
+}
+
 double Lookahead::frozen_centre() const {
     return static_cast<double>(frozen_.tick - timeline_->now()) * parameters_.period + frozen_.offset;
 }
@@ -39,10 +46,10 @@ Lookahead::NextStep Lookahead::next_step() const {
             const double stop = frozen_centre();
             n.centre = std::max(n.centre, stop + rules_.spacing(frozen_.step.shape(), n.step.shape()));
             n.centre = std::max(n.centre, stop + frozen_.rest);
-            // A sample lands on the corner while the tool rests: the kernel starts on or after the
-            // first tick at which the stop's kernel has ended.
-            const double settled = stop + 0.5 * frozen_.step.kernel.width();
-            n.centre = std::max(n.centre, std::ceil(settled / period - 1e-9) * period + half);
+            n.centre = std::max(n.centre, start_after_stop(0, stop, frozen_.step, half));
+        } else if (s.dwell > 0.0) {  // from rest: the dwell runs from when the block came
+            const double since = s.added - static_cast<double>(timeline_->now()) * period;
+            n.centre = std::max(n.centre, std::ceil((since + s.dwell) / period - 1e-9) * period + half);
         }
         return n;
     }

@@ -57,6 +57,7 @@ void PaperPlanner::reset(const AxisVector& position) {
     last_ = Last{};
     last_.end = position;
     corner_count_ = 0;
+    pending_dwell_ = 0.0;
 }
 
 bool PaperPlanner::take_report(CornerReport& report) {
@@ -67,10 +68,11 @@ bool PaperPlanner::take_report(CornerReport& report) {
     return true;
 }
 
-PaperPlanner::Start PaperPlanner::schedule(double Tk, std::int64_t now, bool rest) const {
+PaperPlanner::Start PaperPlanner::schedule(double Tk, std::int64_t now, bool rest, double dwell) const {
     // The next pulse starts Td - Tk after the previous one ended (Eq. 11), never in the past.
     const double period = parameters_.period;
     Start s{last_.end_tick, last_.end_offset + (chain_->delay() - Tk), Tk};
+    s.offset += dwell;  // a stop's rest starts on the first sample after it, as without a dwell
     normalise(s.tick, s.offset, period);
     if (Tk == 0.0 && (rest || s.offset > 0.0)) {
         // A stop: rest until the next servo sample so that one sample lands exactly on the
@@ -207,7 +209,11 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
 Result PaperPlanner::add(const Block& block) {
     const AxisVector delta = block.target - last_.end;
     const double length = delta.norm();
-    if (length < min_block_length) return Result::skipped;
+    if (length < min_block_length) {  // skipped; its dwell goes to the next block
+        pending_dwell_ += block.dwell;
+        return Result::skipped;
+    }
+    const double dwell = pending_dwell_ + block.dwell;
     // The pulse must fit the servo clock (int64 ticks): a feed of 1e-300, or a length that
     // overflows, gives Tv = inf, which would be converted to a tick count (undefined behaviour).
     if (!(length / block.feed <= longest_pulse(parameters_.period))) return Result::invalid_block;
@@ -221,7 +227,8 @@ Result PaperPlanner::add(const Block& block) {
 
     CornerReport report;
     bool joined = false;
-    Start start{now, 0.0, 0.0};  // from rest: at once
+    // From rest: at once, or after the dwell.
+    Start start{now + static_cast<std::int64_t>(std::ceil(dwell / parameters_.period - 1e-9)), 0.0, 0.0};
     auto refuse = [&] {  // nothing committed: the tool rests at the previous block's end, as checked
         ++stats_.refused;
         return Result::infeasible;
@@ -239,12 +246,12 @@ Result PaperPlanner::add(const Block& block) {
         report.point = last_.end;
         report.beta = beta;
         report.epsilon = last_.tolerance;
-        report.exact_stop = last_.termination == Termination::exact_stop;
+        report.exact_stop = last_.termination == Termination::exact_stop || dwell > 0.0;
         const bool in_window = parameters_.fixed_overlap < 0.0 && (last_.run_tv < td || tv < td || check_limits_);
         double Tk = 0.0;
         if (report.exact_stop) {
             if (check_limits_) {  // after a stop only the feed can keep the limits
-                const std::optional<double> f = feed_for_start(delta, length, feed, schedule(0.0, now), block);
+                const std::optional<double> f = feed_for_start(delta, length, feed, schedule(0.0, now, false, dwell), block);
                 if (!f) return refuse();
                 feed = *f;
                 tv = length / feed;
@@ -278,7 +285,7 @@ Result PaperPlanner::add(const Block& block) {
                     report.Tk_tolerance = solve_overlap(model, last_.tolerance, parameters_.tolerance_meaning, period, td);
             }
         }
-        start = schedule(Tk, now, Tk == 0.0 && !report.exact_stop);
+        start = schedule(Tk, now, Tk == 0.0 && !report.exact_stop, report.exact_stop ? dwell : 0.0);
         joined = joined && start.Tk == td;
         report.Tk = start.Tk;
         if (!joined && !report.exact_stop) {  // report-only

@@ -53,8 +53,8 @@ Planner::~Planner() = default;
 Result Planner::add(const Block& block) {
     const bool blend = block.termination == Termination::blend;
     if (!finite(block.target) || !std::isfinite(block.feed) || block.feed <= 0.0 || std::isnan(block.tolerance) ||
-        (blend && !(block.tolerance > 0.0))) {
-        refusal_ = "invalid block (non-finite target, feed <= 0 or bad tolerance)";
+        (blend && !(block.tolerance > 0.0)) || !(block.dwell >= 0.0 && block.dwell <= max_dwell)) {
+        refusal_ = "invalid block (non-finite target, feed <= 0, bad tolerance or dwell)";
         return Result::invalid_block;
     }
     if (aborting_) return Result::queue_full;

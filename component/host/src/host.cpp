@@ -21,6 +21,23 @@ constexpr int max_messages_per_step = 10000;  // step() never spins forever on a
 // started is a one-off and does not last this long.
 constexpr auto lost_program_after = std::chrono::seconds(1);
 
+// event_t's kinds are firtp::EventKind's values.
+static_assert(static_cast<int>(EventKind::spindle_clockwise) == firtp_lcm::event_t::SPINDLE_CLOCKWISE);
+static_assert(static_cast<int>(EventKind::tool_change) == firtp_lcm::event_t::TOOL_CHANGE);
+static_assert(static_cast<int>(EventKind::pause) == firtp_lcm::event_t::PAUSE);
+static_assert(static_cast<int>(EventKind::dwell) == firtp_lcm::event_t::DWELL);
+static_assert(static_cast<int>(EventKind::program_end) == firtp_lcm::event_t::PROGRAM_END);
+static_assert(event_kinds == firtp_lcm::event_t::PROGRAM_END + 1);
+
+// One message to send: a block or an event (seq i at index i - 1, in program order).
+struct Outgoing {
+    bool is_event = false;
+    firtp_lcm::block_t block{};
+    firtp_lcm::event_t event{};
+};
+
+std::int64_t records(const Program& program) { return std::ssize(program.blocks) + std::ssize(program.events); }
+
 }  // namespace
 
 const char* to_string(Result result) {
@@ -52,17 +69,35 @@ struct Host::State {
         : lcm(l),
           options(std::move(o)),
           program_id(options.program_id != 0 ? options.program_id : messages::now_utime()),
-          stream(program_id, std::ssize(program.blocks),
+          stream(program_id, records(program),
                  {options.initial_window, options.resend_timeout, options.max_resends}),
           control(program_id, options.feed_scale, options.max_feed_scale, options.control_period),
           axes(options.record_axis_states),
-          watch(program_id, std::ssize(program.blocks)) {
-        std::int64_t seq = 0;
-        for (const Block& block : program.blocks) {
-            blocks.push_back(messages::to_message(block, program_id, ++seq, 0));
+          watch(program_id, records(program)) {
+        // Events before block i, then block i; the events after the last block at the end.
+        std::size_t next_event = 0;
+        auto add_events = [&](std::size_t before_block) {
+            for (; next_event < program.events.size() && program.events[next_event].before_block <= before_block; ++next_event) {
+                const ProgramEvent& e = program.events[next_event];
+                Outgoing record;
+                record.is_event = true;
+                record.event = messages::event_message(static_cast<std::int8_t>(e.kind), e.value, e.line, program_id,
+                                                  std::ssize(out) + 1, 0);
+                out.push_back(record);
+                if (result != Result::running) continue;
+                if (auto problem = messages::validate(record.event)) finish(Result::failed, *problem);
+            }
+        };
+        for (std::size_t i = 0; i < program.blocks.size(); ++i) {
+            add_events(i);
+            Outgoing record;
+            record.block = messages::to_message(program.blocks[i], program_id, std::ssize(out) + 1, 0);
+            out.push_back(record);
             if (result != Result::running) continue;
-            if (auto problem = messages::validate(blocks.back())) finish(Result::failed, *problem);
+            if (auto problem = messages::validate(record.block)) finish(Result::failed, *problem);
         }
+        add_events(program.blocks.size());
+        moves = program.blocks.size();
     }
 
     Clock::time_point now() const { return options.clock ? options.clock() : Clock::now(); }
@@ -85,6 +120,15 @@ struct Host::State {
             return;
         }
         axes.on_message(received.message);
+    }
+
+    void on_reached_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
+        const auto received = messages::receive<firtp_lcm::event_t>(buffer->data, buffer->data_size);
+        if (received.problem) {
+            ++statistics.corrupted_dropped;
+            return;
+        }
+        if (received.message.program == program_id) ++statistics.events_reached;
     }
 
     void on_status(const status_t* status) {
@@ -138,18 +182,25 @@ struct Host::State {
         for (int n = 0; n < options.max_burst; ++n) {
             const std::optional<std::int64_t> seq = stream.next();
             if (!seq) return;
-            firtp_lcm::block_t& message = blocks[*seq - 1];
-            message.utime = messages::now_utime();
-            messages::publish(lcm, messages::block_channel, message);  // sealed after the utime
+            Outgoing& o = out[static_cast<std::size_t>(*seq - 1)];
+            if (o.is_event) {
+                o.event.utime = messages::now_utime();
+                messages::publish(lcm, messages::event_channel, o.event);  // sealed after the utime
+                ++statistics.events_published;
+            } else {
+                o.block.utime = messages::now_utime();
+                messages::publish(lcm, messages::block_channel, o.block);
+                ++statistics.blocks_published;
+            }
             stream.sent(*seq, t);
-            ++statistics.blocks_published;
         }
     }
 
     void check_stall() {
         const std::optional<std::int64_t> seq = stream.stalled();
         if (!seq) return;
-        std::string text = messages::describe(blocks[*seq - 1]) + " not accepted after " +
+        const Outgoing& o = out[static_cast<std::size_t>(*seq - 1)];
+        std::string text = (o.is_event ? messages::describe(o.event) : messages::describe(o.block)) + " not accepted after " +
                            std::to_string(options.max_resends) + " resends";
         if (latest && !latest->error_text.empty()) text += "; component: " + latest->error_text;
         finish(Result::failed, text);
@@ -158,13 +209,15 @@ struct Host::State {
     lcm::LCM& lcm;
     HostOptions options;
     std::int64_t program_id;
-    std::vector<firtp_lcm::block_t> blocks;  // seq i at index i - 1
+    std::vector<Outgoing> out;  // blocks and events, seq i at index i - 1
+    std::size_t moves = 0;      // blocks among them
     BlockStream stream;
     ControlSender control;
     AxisRecorder axes;
     StatusWatch watch;
     lcm::Subscription* status_subscription = nullptr;
     lcm::Subscription* axis_subscription = nullptr;
+    lcm::Subscription* reached_subscription = nullptr;
     Result result = Result::running;
     std::string error;
     Statistics statistics;
@@ -185,17 +238,20 @@ Host::Host(lcm::LCM& lcm, const Program& program, HostOptions options)
     messages::keep_everything(s.status_subscription);
     s.axis_subscription = lcm.subscribe(messages::axis_state_channel, &State::on_axis_state_bytes, &s);
     messages::keep_everything(s.axis_subscription);
+    s.reached_subscription = lcm.subscribe(messages::event_reached_channel, &State::on_reached_bytes, &s);
+    messages::keep_everything(s.reached_subscription);
 }
 
 Host::~Host() {
     state_->lcm.unsubscribe(state_->status_subscription);
     state_->lcm.unsubscribe(state_->axis_subscription);
+    state_->lcm.unsubscribe(state_->reached_subscription);
 }
 
 Result Host::step() {
     State& s = *state_;
     if (s.result != Result::running) return s.result;
-    if (s.blocks.empty()) {
+    if (s.moves == 0) {  // nothing moves: done, as before events were sent
         s.finish(Result::done, "");
         return s.result;
     }
@@ -265,7 +321,7 @@ const std::vector<firtp_lcm::axis_state_t>& Host::axis_states() const { return s
 Progress Host::progress() const {
     const State& s = *state_;
     Progress p;
-    p.blocks = s.blocks.size();
+    p.blocks = s.out.size();
     p.sent = static_cast<std::size_t>(s.stream.highest_sent());
     p.acknowledged = static_cast<std::size_t>(s.stream.acknowledged());
     p.feed_request = s.control.feed_scale();

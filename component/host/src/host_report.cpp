@@ -19,6 +19,11 @@ std::string host_report(const std::string& program_file, const Host& host, Resul
                   p.blocks, p.acknowledged, p.executed, static_cast<long long>(s.blocks_published),
                   static_cast<long long>(s.go_backs), static_cast<long long>(s.rejected));
     text += line;
+    if (s.events_published > 0) {
+        std::snprintf(line, sizeof line, "  events: published %lld, reached %lld\n",
+                      static_cast<long long>(s.events_published), static_cast<long long>(s.events_reached));
+        text += line;
+    }
     std::snprintf(line, sizeof line, "  axis states: %lld received\n", static_cast<long long>(s.axis_states));
     text += line;
     if (s.corrupted_refused > 0 || s.corrupted_dropped > 0) {

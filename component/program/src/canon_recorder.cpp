@@ -176,11 +176,13 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     block.tolerance = termination == Termination::exact_stop ? 0.0 : tolerance;
     block.type = type;
     block.line = line;
+    block.dwell = dwell_;
+    dwell_ = 0.0;
     program_.blocks.push_back(block);
     position_ = target;
 }
 
-// The program is kept whole in memory, 112 bytes a block: a few short lines of many-chord arcs
+// The program is kept whole in memory, 120 bytes a block: a few short lines of many-chord arcs
 // would otherwise fill it.
 std::string CanonRecorder::too_many_blocks() const {
     const std::string most = std::to_string(machine_.max_program_blocks);
@@ -220,6 +222,10 @@ void CanonRecorder::event(EventKind kind, double value) {
         Block& last = program_.blocks.back();
         last.termination = Termination::exact_stop;
         last.tolerance = 0.0;
+    }
+    if (kind == EventKind::dwell) {  // a stop of that length in the timeline (Block::dwell)
+        if (!(value >= 0.0 && value <= max_dwell)) return fail(at.line, cat("G4 P", std::to_string(value), ": a dwell must be 0 to ", std::to_string(static_cast<int>(max_dwell)), " s"));
+        dwell_ += value;
     }
     program_.events.push_back(ProgramEvent{kind, value, program_.blocks.size(), at.file, at.line});
 }

@@ -95,6 +95,7 @@ private:
     Termination termination_ = Termination::blend;
     double tolerance_ = 0.0;              // mm
     double rpm_ = 0.0;
+    double dwell_ = 0.0;                  // G4 since the last block: the next block's dwell
     int direction_ = 0;                   // 1 clockwise, -1 counter-clockwise, 0 stopped
     int selected_tool_ = 0, tool_in_spindle_ = 0;
     bool flood_ = false, mist_ = false;

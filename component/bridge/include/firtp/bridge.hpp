@@ -12,9 +12,14 @@
 #include <firtp/types.hpp>
 
 #include <cstdint>
+#include <deque>
 #include <string>
 
 namespace firtp {
+
+namespace stream {
+struct BlockRecord;
+}
 
 struct BridgeOptions {
     const char* name = "firtp-bridge";  // HAL component name and pin prefix (pin_pairs() name the default)
@@ -44,7 +49,7 @@ public:
     // "bridge-pin component-pin" pairs to net, in HAL naming.
     static const char* const* pin_pairs();
 
-    std::int64_t blocks_forwarded() const { return forwarded_; }
+    std::int64_t blocks_forwarded() const { return forwarded_; }  // and events
     // Blocks and controls refused because their crc did not match (status_t corrupted).
     std::int64_t messages_corrupted() const { return corrupted_; }
     // Nothing queued in the component or its stream, and not aborting.
@@ -55,7 +60,14 @@ private:
     struct Pins;
     void on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
     void on_control_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+    void on_event_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
     void on_block(const firtp_lcm::block_t* message);      // intact
+    void on_event(const firtp_lcm::event_t* message);      // intact
+    // The sequence and the stream's room for a record (program, seq) named `name`; false (and
+    // reported) when it must not go to the component.
+    bool admit(std::int64_t program, std::int64_t seq, const std::string& name);
+    void write(const stream::BlockRecord& record, std::int64_t program, std::int64_t seq);
+    void publish_reached();
     void on_control(const firtp_lcm::control_t* message);  // intact
     void report(std::int32_t error, std::string text);
     void forward_states();
@@ -88,6 +100,9 @@ private:
     bool status_due_ = true;
     lcm::Subscription* block_subscription_ = nullptr;
     lcm::Subscription* control_subscription_ = nullptr;
+    lcm::Subscription* event_subscription_ = nullptr;
+    std::deque<firtp_lcm::event_t> in_flight_;  // events forwarded, not reached yet, in order
+    std::int64_t reached_ = -1;                 // the component's events count last seen (-1: none yet)
 };
 
 }  // namespace firtp

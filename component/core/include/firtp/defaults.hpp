@@ -45,8 +45,8 @@ inline constexpr double max_feed_override = decimal_value(FIRTP_DEFAULT_MAX_FEED
 inline constexpr long servo_period_ns = 1'000'000;
 inline constexpr double servo_period = servo_period_ns / 1e9;  // s
 // Blocks a program may expand to (an arc: one a chord) unless [FIRTP]MAX_PROGRAM_BLOCKS says
-// otherwise: 10x the 10^6-block programs the benchmarks plan. 112 bytes a block: 1.1 GB, 1.8 GB
-// peak (measured) while the vector grows.
+// otherwise: 10x the 10^6-block programs the benchmarks plan. 120 bytes a block: 1.2 GB (1.8 GB
+// peak measured while the vector grew, at 112 bytes a block before Block::dwell).
 inline constexpr std::size_t max_program_blocks = 10'000'000;
 
 }  // namespace defaults

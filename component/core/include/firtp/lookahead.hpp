@@ -98,6 +98,10 @@ private:
         bool hold_end = false;     // a hold stops the tool at its end (no split needed)
         bool brake = false;        // a hold is braking through it: its speeds as low as they go
         double tolerance = 0.0;
+        // G4 before it: at rest this long after the previous stop has settled (or, from rest,
+        // after `added`, the timeline clock (s) when it came).
+        double dwell = 0.0;
+        double added = 0.0;
         MotionType type = MotionType::feed;
         std::int64_t line = 0;
         // The junction after it (valid once the next segment exists; the last one ends in a stop).
@@ -196,6 +200,10 @@ private:
 
     // Motion.
     double frozen_centre() const;           // seconds from the timeline's now
+    // Earliest centre (s from now) of the start step `half` wide of segment i (0: the front),
+    // after the stop step centred at `stop` (s from now): the kernel starts on the first sample at
+    // which the stop has settled and segment i's dwell has passed.
+    double start_after_stop(std::size_t i, double stop, const Step& stop_step, double half) const;
     NextStep next_step() const;
     bool final_for_start() const;
     void freeze(const NextStep& next);
@@ -232,6 +240,7 @@ private:
     bool next_is_start_ = false;
     double next_start_ = 0.0;          // the next step's kernel start, s on the timeline's clock
     double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
+    double pending_dwell_ = 0.0;       // dwell of skipped zero-length blocks: the next block's
 
     std::size_t capacity_;           // blocks add() takes
     std::vector<Segment> segments_;  // ring: capacity_ + 1 (the spare for a hold's split)

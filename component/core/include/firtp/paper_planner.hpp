@@ -73,7 +73,8 @@ private:
         double guess;       // where its closest approach is expected, likewise
     };
 
-    Start schedule(double Tk, std::int64_t now, bool rest = false) const;  // rest: a blended corner's stop
+    // rest: a blended corner's stop; dwell: G4, at rest this long more after a stop (Tk = 0)
+    Start schedule(double Tk, std::int64_t now, bool rest = false, double dwell = 0.0) const;
     double latest_overlap(std::int64_t now) const;
     Leg candidate(const AxisVector& delta, double length, double feed, const Start& start, const Block& block) const;
     // True when the candidate keeps the limits and every corner it can move (with nothing after it).
@@ -92,6 +93,7 @@ private:
     Last last_;
     PlannerStats stats_;
     std::uint64_t pushed_ = 0;   // legs pushed since construction
+    double pending_dwell_ = 0.0; // dwell of skipped zero-length blocks: the next block's
     std::array<Corner, 16> corners_{};  // recent corners, oldest first
     std::size_t corner_count_ = 0;
     LimitSweep sweep_;

@@ -16,6 +16,9 @@ using AxisVector = Eigen::Matrix<double, max_axes, 1>;
 // Blocks shorter than this (units) are skipped: they have no direction to plan with.
 constexpr double min_block_length = 1e-9;
 
+// Longest dwell a block may ask for, s (a day): the servo clock counts it in whole periods.
+constexpr double max_dwell = 86400.0;
+
 // Values match LinuxCNC's EMC_MOTION_TYPE_* so they pass through unchanged.
 enum class MotionType : std::uint8_t { traverse = 1, feed = 2 };
 
@@ -30,6 +33,9 @@ struct Block {
     double tolerance = 0.0;                  // epsilon at the corner that ends this block, units (> 0 when blending)
     MotionType type = MotionType::feed;
     std::int64_t line = 0;                   // source line, reported back while the block executes
+    // G4: the tool rests at least this long (s) where the previous block stopped before this block
+    // starts (a dwell forces that stop). Last, so that brace lists of the fields above still fit.
+    double dwell = 0.0;
 };
 
 // Commanded state of every axis at one servo tick.

@@ -49,7 +49,7 @@ const char* to_string(Result result);
 const char* state_name(int state);
 
 struct Progress {
-    std::size_t blocks = 0;        // in the program
+    std::size_t blocks = 0;        // in the program, with its events (one seq each)
     std::size_t sent = 0;          // highest seq published so far
     std::size_t acknowledged = 0;  // accepted by the component
     std::size_t executed = 0;      // accepted and no longer queued
@@ -63,6 +63,8 @@ struct Progress {
 
 struct Statistics {
     std::int64_t blocks_published = 0;  // including resends
+    std::int64_t events_published = 0;  // program events (event_t), likewise
+    std::int64_t events_reached = 0;    // of this program's events: reached by the motion (FIRTP_EVENT_REACHED)
     std::int64_t go_backs = 0;          // go-back-N resends
     std::int64_t rejected = 0;          // blocks the component refused while this host ran
     std::int64_t corrupted_refused = 0; // of those and of the controls: refused as corrupted (bad crc)

@@ -7,6 +7,7 @@
 #include <firtp_lcm/block_t.hpp>
 #include <firtp_lcm/config_t.hpp>
 #include <firtp_lcm/control_t.hpp>
+#include <firtp_lcm/event_t.hpp>
 #include <firtp_lcm/status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
@@ -25,6 +26,8 @@ inline constexpr const char* axis_state_channel = "FIRTP_AXIS_STATE";           
 inline constexpr const char* axis_state_live_channel = "FIRTP_AXIS_STATE_LIVE";  // decimated
 inline constexpr const char* control_channel = "FIRTP_CONTROL";
 inline constexpr const char* config_channel = "FIRTP_CONFIG";  // machine and settings (config_t)
+inline constexpr const char* event_channel = "FIRTP_EVENT";    // program events, host -> component (event_t)
+inline constexpr const char* event_reached_channel = "FIRTP_EVENT_REACHED";  // each as motion reaches it
 
 // How often the component side publishes, by default (every bridge): FIRTP_AXIS_STATE_LIVE every
 // N servo periods, FIRTP_STATUS every N periods and on every change.
@@ -51,6 +54,13 @@ std::optional<std::string> validate(const firtp_lcm::block_t& message);
 
 // "block seq N (line L)": how every error about one block message names it.
 std::string describe(const firtp_lcm::block_t& message);
+
+// A program event (kind: event_t's constants, the values of firtp::EventKind).
+firtp_lcm::event_t event_message(std::int8_t kind, double value, std::int64_t line, std::int64_t program,
+                                 std::int64_t seq, std::int64_t utime);
+// Empty when the event may run: seq >= 1, a known kind, a finite value, a dwell of 0 .. max_dwell s.
+std::optional<std::string> validate(const firtp_lcm::event_t& message);
+std::string describe(const firtp_lcm::event_t& message);  // "event seq N (line L)"
 
 // Wall-clock microseconds since the epoch, LCM's utime convention.
 std::int64_t now_utime();
