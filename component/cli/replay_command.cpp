@@ -184,7 +184,7 @@ int replay_command(std::span<const std::string> args) {
     const Comparison c = compare_states(run.states, collector.states, component.machine.limits.axes, options.tolerance);
     std::cout << "replay " << options.log.string() << "\n"
               << "machine      " << component.description << "\n"
-              << "log          " << run.blocks << " blocks, " << run.controls << " controls, " << run.states.size()
+              << "log          " << run.blocks << " blocks, " << run.program_events << " program events, " << run.controls << " controls, " << run.states.size()
               << " axis states\n"
               << "fed          " << schedule.placed_by_state << " blocks in the periods the axis states name\n"
               << "replayed     " << collector.states.size() << " axis states in " << periods << " servo periods\n"

@@ -26,7 +26,8 @@ FeedSchedule feed_schedule(const LoggedRun& run) {
     const auto until = taken_until(run);
     const auto taken = [&](const LoggedEvent& e) {
         const auto it = until.find(e.program);
-        return e.channel == messages::block_channel && it != until.end() && e.seq < it->second;
+        return (e.channel == messages::block_channel || e.channel == messages::event_channel) && it != until.end() &&
+               e.seq < it->second;
     };
     std::map<BlockId, const LoggedEvent*> first_copy;
     for (const LoggedEvent& e : run.events)

@@ -58,7 +58,8 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
         const std::string& channel = event->channel;
         if (channel == messages::config_channel) {
             if (!run.config) run.config = intact<firtp_lcm::config_t>(log, *event);
-        } else if (channel == messages::block_channel || channel == messages::control_channel) {
+        } else if (channel == messages::block_channel || channel == messages::event_channel ||
+                   channel == messages::control_channel) {
             LoggedEvent e;
             e.eventnum = event->eventnum;
             e.channel = channel;
@@ -68,6 +69,12 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
                 e.program = block.program;
                 e.seq = block.seq;
                 ++run.blocks;
+            } else if (channel == messages::event_channel) {  // in the blocks' sequence
+                const auto program_event = intact<firtp_lcm::event_t>(log, *event);
+                programs[program_event.program].insert(program_event.seq);
+                e.program = program_event.program;
+                e.seq = program_event.seq;
+                ++run.program_events;
             } else {
                 (void)intact<firtp_lcm::control_t>(log, *event);
                 ++run.controls;

@@ -1,5 +1,5 @@
 // What `firtp replay` takes from an LCM log: the component's configuration, and in log order the
-// messages sent to it (blocks, controls) and the axis states it produced. Every message must be
+// messages sent to it (blocks, program events, controls) and the axis states it produced. Every message must be
 // intact and the log complete (no axis state or block missing), else it cannot be replayed.
 #pragma once
 
@@ -16,9 +16,9 @@ namespace firtp::cli {
 struct LoggedEvent {
     enum class Kind { input, state } kind = Kind::input;
     std::int64_t eventnum = 0;
-    std::string channel;                     // input: FIRTP_BLOCK or FIRTP_CONTROL
+    std::string channel;                     // input: FIRTP_BLOCK, FIRTP_EVENT or FIRTP_CONTROL
     std::vector<std::uint8_t> data;          // input: the bytes as logged (sealed)
-    std::int64_t program = 0, seq = 0;       // input on FIRTP_BLOCK: the block's
+    std::int64_t program = 0, seq = 0;       // input on FIRTP_BLOCK or FIRTP_EVENT: its place in the sequence
     std::size_t state = 0;                   // state: index into LoggedRun::states
 };
 
@@ -28,7 +28,7 @@ struct LoggedRun {
     std::vector<firtp_lcm::axis_state_t> states;  // FIRTP_AXIS_STATE, in log order
     std::vector<std::int64_t> state_events;       // their event numbers
     std::vector<firtp_lcm::status_t> statuses;    // FIRTP_STATUS, in log order
-    std::int64_t blocks = 0, controls = 0;
+    std::int64_t blocks = 0, program_events = 0, controls = 0;
 };
 
 // Throws std::runtime_error naming the log and the event: unreadable, a corrupted message, axis

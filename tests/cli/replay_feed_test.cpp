@@ -21,6 +21,14 @@ public:
         e.seq = seq;
         run.events.push_back(e);
     }
+    void program_event(std::int64_t program, std::int64_t seq) {
+        LoggedEvent e;
+        e.eventnum = static_cast<std::int64_t>(run.events.size());
+        e.channel = messages::event_channel;
+        e.program = program;
+        e.seq = seq;
+        run.events.push_back(e);
+    }
     void control() {
         LoggedEvent e;
         e.eventnum = static_cast<std::int64_t>(run.events.size());
@@ -43,12 +51,13 @@ public:
     LoggedRun run;
 };
 
-// "b<program>.<seq>" for blocks, "c" for controls, per period.
+// "b<program>.<seq>" for blocks, "e<program>.<seq>" for program events, "c" for controls, per period.
 std::vector<std::string> names(const std::vector<const LoggedEvent*>& inputs) {
     std::vector<std::string> out;
     for (const LoggedEvent* e : inputs) {
-        std::string name = e->channel == messages::block_channel ? "b" : "c";
-        if (name == "b") name.append(std::to_string(e->program)).append(".").append(std::to_string(e->seq));
+        const std::string channel = e->channel;
+        std::string name = channel == messages::block_channel ? "b" : channel == messages::event_channel ? "e" : "c";
+        if (name != "c") name.append(std::to_string(e->program)).append(".").append(std::to_string(e->seq));
         out.push_back(name);
     }
     return out;
@@ -85,6 +94,18 @@ TEST(ReplayFeed, ANewProgramStartsFromItsFirstBlock) {
     const FeedSchedule s = feed_schedule(log.run);
     EXPECT_EQ(names(s.before[0]), Names{"b1.1"});
     EXPECT_EQ(names(s.before[1]), (Names{"b2.1", "b2.2"}));
+}
+
+// Program events (spindle, tool, dwell, end) share the blocks' sequence: taken in the same periods.
+TEST(ReplayFeed, ProgramEventsGoInWithTheBlocksAroundThem) {
+    Log log;
+    log.block(3, 1), log.program_event(3, 2), log.block(3, 3), log.program_event(3, 4);
+    log.state(3, 3);
+    log.state(3, 5);
+    const FeedSchedule s = feed_schedule(log.run);
+    EXPECT_EQ(names(s.before[0]), (Names{"b3.1", "e3.2"}));
+    EXPECT_EQ(names(s.before[1]), (Names{"b3.3", "e3.4"}));
+    EXPECT_EQ(s.placed_by_state, 4u);
 }
 
 TEST(ReplayFeed, ATakenBlockTheLogDoesNotHoldIsNamed) {
