@@ -128,11 +128,13 @@ bool Bridge::component_idle() const {
            hal_pin::get(pins_->state) != firtp_lcm::status_t::ABORTING;
 }
 
-// The crc first: a corrupted block is refused like a lost one (never planned, never acknowledged:
-// next_seq stays, the host resends it), and reported, named as far as its bytes allow.
-void Bridge::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
-    const auto received = messages::receive<firtp_lcm::block_t>(buffer->data, buffer->data_size);
-    if (!received.problem) return on_block(&received.message);
+// The crc first: a corrupted block or event is refused like a lost one (never planned, never
+// acknowledged: next_seq stays, the host resends it), and reported, named as far as its bytes allow.
+template <class Message>
+void Bridge::on_sequenced_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel,
+                                void (Bridge::*intact)(const Message*)) {
+    const auto received = messages::receive<Message>(buffer->data, buffer->data_size);
+    if (!received.problem) return (this->*intact)(&received.message);
     ++rejected_;
     ++corrupted_;
     const std::string name = received.decoded ? messages::describe(received.message)
@@ -141,16 +143,12 @@ void Bridge::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string&
            name + ": " + *received.problem + "; refused, expected seq " + std::to_string(sequence_.next_seq()));
 }
 
-// As a block: a corrupted event is refused like a lost one and resent.
+void Bridge::on_block_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    on_sequenced_bytes(buffer, channel, &Bridge::on_block);
+}
+
 void Bridge::on_event_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
-    const auto received = messages::receive<firtp_lcm::event_t>(buffer->data, buffer->data_size);
-    if (!received.problem) return on_event(&received.message);
-    ++rejected_;
-    ++corrupted_;
-    const std::string name = received.decoded ? messages::describe(received.message)
-                                              : channel + " message (" + std::to_string(buffer->data_size) + " bytes)";
-    report(firtp_lcm::status_t::ERROR_CORRUPTED,
-           name + ": " + *received.problem + "; refused, expected seq " + std::to_string(sequence_.next_seq()));
+    on_sequenced_bytes(buffer, channel, &Bridge::on_event);
 }
 
 // A corrupted control is ignored (the levels in effect stay) and reported; the host republishes

@@ -63,6 +63,11 @@ private:
     void on_event_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel);
     void on_block(const firtp_lcm::block_t* message);      // intact
     void on_event(const firtp_lcm::event_t* message);      // intact
+    // Blocks and events in the sequence: an intact one goes to `intact`; a corrupted one is refused
+    // like a lost one (the host resends it) and reported, named as far as its bytes allow.
+    template <class Message>
+    void on_sequenced_bytes(const lcm::ReceiveBuffer* buffer, const std::string& channel,
+                            void (Bridge::*intact)(const Message*));
     // The sequence and the stream's room for a record (program, seq) named `name`; false (and
     // reported) when it must not go to the component.
     bool admit(std::int64_t program, std::int64_t seq, const std::string& name);
