@@ -1,4 +1,4 @@
-#include "component_core.hpp"
+#include <firtp/hal/component_core.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "event_queue.hpp"
+#include <firtp/hal/event_queue.hpp>
 
 #include <cmath>
 

@@ -23,11 +23,11 @@
 #include "rtapi_app.h"
 #include "hal.h"
 
-#include "component_core.hpp"
-#include "module_number.hpp"
-#include "pin_table.hpp"
-#include "hal_pin_access.hpp"
-#include "stream_records.hpp"
+#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/module_number.hpp>
+#include <firtp/hal/pin_table.hpp>
+#include <firtp/hal/hal_pin_access.hpp>
+#include <firtp/hal/stream_records.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 //   firtp_pin_docs --write GUIDE.md firtp.9   rewrite the tables in place
 //
 // Each table lies between a begin and an end marker line (a comment in either format).
-#include "pin_table.hpp"
+#include <firtp/hal/pin_table.hpp>
 
 #include <fstream>
 #include <iterator>
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
                 std::ofstream(d.path) << expected;
                 std::cout << "wrote the pin table of " << d.path << "\n";
             } else {
-                std::cerr << d.path << ": the pin table differs from component/hal/pin_table.hpp "
+                std::cerr << d.path << ": the pin table differs from component/hal/include/firtp/hal/pin_table.hpp "
                           << "(firtp_pin_docs --write rewrites it)\n";
                 status = 1;
             }

@@ -2,7 +2,7 @@
 
 #include <hal.h>
 
-#include "hal_pin_access.hpp"
+#include <firtp/hal/hal_pin_access.hpp>
 
 #include <stdexcept>
 #include <string>

@@ -2,7 +2,7 @@
 #include "tp_ini.hpp"
 
 #include "inifile.hh"  // LinuxCNC's IniFile (liblinuxcncini), the reader LinuxCNC itself uses
-#include "module_number.hpp"
+#include <firtp/hal/module_number.hpp>
 
 #include <cctype>
 #include <optional>

@@ -40,7 +40,7 @@ extern "C" {
 #include "tp_arena.hpp"
 #include "tp_core.hpp"
 #include "tp_ini.hpp"
-#include "module_number.hpp"
+#include <firtp/hal/module_number.hpp>
 
 #include <cmath>
 #include <cstdlib>

@@ -3,7 +3,7 @@
 #include "support/limits.hpp"
 #include "support/reference.hpp"
 
-#include <component_core.hpp>
+#include <firtp/hal/component_core.hpp>
 #include <firtp/trajectory.hpp>
 
 #include <gtest/gtest.h>

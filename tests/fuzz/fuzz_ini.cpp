@@ -1,7 +1,7 @@
 // libFuzzer target: the INI reader and the machine it describes (IniFile::parse, load_machine).
 // Any input either gives a ConfigError or a machine the planner and the component accept: valid
 // filter times (or, at the limits, an acceleration limit), rate settings, a positive period, finite limits; ComponentCore takes it.
-#include <component_core.hpp>
+#include <firtp/hal/component_core.hpp>
 #include <firtp/fir_chain.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>

@@ -17,7 +17,7 @@
 // the planner refuses a pulse longer than its clock, 1e16 periods); the component's output stays
 // finite; the blocks it runs are exactly the ones the sequence checker passed, once each, in order
 // (next_seq).
-#include <component_core.hpp>
+#include <firtp/hal/component_core.hpp>
 #include <firtp/messages.hpp>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // window too long for the planner) and limit keys that are misspelt. The per-value checks (zero,
 // negative, NaN, not a number, unknown [FIRTP] keys) are in machine_test.cpp.
 #include "machine_test_support.hpp"
-#include <component_core.hpp>
+#include <firtp/hal/component_core.hpp>
 #include <firtp/machine.hpp>
 
 #include <gtest/gtest.h>

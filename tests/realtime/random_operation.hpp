@@ -15,7 +15,7 @@
 // (next_seq = blocks + 1; each repeat refused). Nothing here allocates after construction.
 #pragma once
 
-#include <component_core.hpp>
+#include <firtp/hal/component_core.hpp>
 #include <firtp/machine.hpp>
 
 #include <algorithm>

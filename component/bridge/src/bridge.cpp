@@ -2,8 +2,8 @@
 
 #include <hal.h>
 
-#include "hal_pin_access.hpp"
-#include "stream_records.hpp"
+#include <firtp/hal/hal_pin_access.hpp>
+#include <firtp/hal/stream_records.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // state and error-code pins into status_t unchanged, and attaches to its streams by these keys.
 #include <firtp/bridge.hpp>
 
-#include "component_core.hpp"
-#include "stream_records.hpp"
+#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/stream_records.hpp>
 
 namespace firtp {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <firtp/types.hpp>
 
-#include "event_queue.hpp"
+#include <firtp/hal/event_queue.hpp>
 
 #include <cstdint>
 

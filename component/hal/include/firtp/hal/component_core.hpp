@@ -19,8 +19,8 @@
 #include <firtp/planner.hpp>
 #include <firtp/types.hpp>
 
-#include "event_queue.hpp"
-#include "stream_records.hpp"
+#include <firtp/hal/event_queue.hpp>
+#include <firtp/hal/stream_records.hpp>
 
 #include <cstdint>
 
