@@ -1,4 +1,4 @@
-#include "chain_options.hpp"
+#include "component_options.hpp"
 #include "csv_writer.hpp"
 #include "output_files.hpp"
 #include "plan_run.hpp"
@@ -12,7 +12,7 @@
 namespace firtp::cli {
 
 int host_command(std::span<const std::string> args) {
-    const ChainOptions options = parse_host_options(args);
+    const ComponentOptions options = parse_host_options(args);
     if (options.plan.help) {
         std::cout << host_help();
         return 0;

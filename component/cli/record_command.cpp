@@ -1,6 +1,6 @@
 #include "record_command.hpp"
 
-#include "chain_options.hpp"
+#include "component_options.hpp"
 #include "cli_errors.hpp"
 #include "log_arguments.hpp"
 #include "plan_run.hpp"
@@ -138,10 +138,10 @@ int record_command(std::span<const std::string> args) {
     LogWriter writer(options.log);
     if (options.ini) {  // the log's first event: the machine as `firtp serve --ini FILE` runs it
         const std::vector<std::string> serve_args{"--ini", options.ini->string()};
-        const ChainOptions serve = parse_serve_options(serve_args);
+        const ComponentOptions serve = parse_serve_options(serve_args);
         const MachineConfig machine = load_machine_config(serve.plan);
         firtp_lcm::config_t config =
-            config_message("serve", serve_args, serve, machine, serve_chain_settings(machine, serve.queue));
+            config_message("serve", serve_args, serve, machine, serve_component_settings(machine, serve.queue));
         config.seq = 1;
         config.utime = messages::now_utime();
         writer.write(messages::config_channel, config.utime, messages::seal_encoded(config));

@@ -59,16 +59,16 @@ private:
 
 }  // namespace
 
-ChainSettings serve_chain_settings(const MachineConfig& machine, int queue) {
-    ChainSettings settings;
+InProcessSettings serve_component_settings(const MachineConfig& machine, int queue) {
+    InProcessSettings settings;
     settings.plan_budget_us = static_cast<int>(machine.period * 1e6 * 0.5);  // half the servo period
     settings.queue = queue;
     return settings;
 }
 
 firtp_lcm::config_t config_message(const std::string& command, std::span<const std::string> args,
-                                   const ChainOptions& options, const MachineConfig& machine,
-                                   const ChainSettings& settings) {
+                                   const ComponentOptions& options, const MachineConfig& machine,
+                                   const InProcessSettings& settings) {
     firtp_lcm::config_t m{};
     m.sender = cat("firtp ", firtp::version);
     m.command = command;
@@ -108,7 +108,7 @@ void ConfigPublisher::publish() {
 
 LoggedComponent component_from(const firtp_lcm::config_t& config) {
     const std::vector<std::string> args = split_words(config.args);
-    ChainOptions options;
+    ComponentOptions options;
     if (config.command == "serve") options = parse_serve_options(args);
     else if (config.command == "run") options = parse_run_options(args);
     else throw std::runtime_error(cat("FIRTP_CONFIG from an unknown command '", config.command, "'"));

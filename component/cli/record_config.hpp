@@ -2,11 +2,11 @@
 // (`firtp serve` and `firtp run` publish it; `firtp replay` rebuilds the component from it).
 #pragma once
 
-#include "chain_options.hpp"
+#include "component_options.hpp"
 
 #include <firtp/machine.hpp>
 #include <firtp/messages.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 #include <chrono>
 #include <span>
@@ -15,12 +15,12 @@
 namespace firtp::cli {
 
 // firtp.so's settings as `firtp serve` runs it: planning within half the servo period, `queue` blocks.
-ChainSettings serve_chain_settings(const MachineConfig& machine, int queue);
+InProcessSettings serve_component_settings(const MachineConfig& machine, int queue);
 
 // The message for `firtp COMMAND args...` running `machine` with `settings` (reads the INI's text).
 firtp_lcm::config_t config_message(const std::string& command, std::span<const std::string> args,
-                                   const ChainOptions& options, const MachineConfig& machine,
-                                   const ChainSettings& settings);
+                                   const ComponentOptions& options, const MachineConfig& machine,
+                                   const InProcessSettings& settings);
 
 // Publishes the message now and then every `every`, each time with the next seq.
 class ConfigPublisher {
@@ -41,7 +41,7 @@ private:
 // parsed again, its INI read from the logged text (errors name the logged file name).
 struct LoggedComponent {
     MachineConfig machine;
-    ChainSettings settings;
+    InProcessSettings settings;
     std::string description;  // "firtp serve --ini diamond.ini (firtp 0.1.0)"
 };
 LoggedComponent component_from(const firtp_lcm::config_t& config);

@@ -1,6 +1,6 @@
 #include "record_command.hpp"
 
-#include "chain_options.hpp"
+#include "component_options.hpp"
 #include "cli_errors.hpp"
 #include "log_arguments.hpp"
 #include "plan_run.hpp"
@@ -11,7 +11,7 @@
 #include "replay_log.hpp"
 
 #include <firtp/messages.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 #include <firtp/text_cat.hpp>
 
 #include <boost/program_options.hpp>
@@ -153,7 +153,7 @@ int replay_command(std::span<const std::string> args) {
 
     // The component on memq://, as `firtp run` builds it, stepped one period at a time.
     const auto lcm = messages::open("memq://");
-    ServoChain chain(*lcm, component.machine, options.module.value_or(default_module_path()), component.settings);
+    InProcessComponent chain(*lcm, component.machine, options.module.value_or(default_module_path()), component.settings);
     Collector collector;
     messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Collector::on_state, &collector));
     auto period = [&] {

@@ -1,6 +1,6 @@
 #include "run_command.hpp"
 
-#include "chain_options.hpp"
+#include "component_options.hpp"
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"
 #include "plan_checks.hpp"
@@ -10,7 +10,7 @@
 #include "progress_line.hpp"
 #include "record_config.hpp"
 #include <firtp/recorded_states.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 #include "summary.hpp"
 
 #include <firtp/host.hpp>
@@ -24,7 +24,7 @@
 namespace firtp::cli {
 
 int run_command(std::span<const std::string> args) {
-    const ChainOptions options = parse_run_options(args);
+    const ComponentOptions options = parse_run_options(args);
     if (options.plan.help) {
         std::cout << run_help();
         return 0;
@@ -39,8 +39,8 @@ int run_command(std::span<const std::string> args) {
     const auto lcm = messages::open(options.lcm_url.empty() ? "memq://" : options.lcm_url);
     std::optional<LcmRecorder> recorder;
     if (options.lcm_log) recorder.emplace(*lcm, *options.lcm_log);
-    const ChainSettings settings;
-    firtp::ServoChain chain(*lcm, run.machine, options.module.value_or(firtp::default_module_path()), settings);
+    const InProcessSettings settings;
+    firtp::InProcessComponent chain(*lcm, run.machine, options.module.value_or(firtp::default_module_path()), settings);
     // The machine first in the log, so that `firtp replay` needs nothing else.
     ConfigPublisher config(*lcm, config_message("run", args, options, run.machine, settings));
     host::HostOptions host_options;

@@ -1,8 +1,8 @@
-#include "chain_options.hpp"
+#include "component_options.hpp"
 #include "plan_run.hpp"
 #include "record_config.hpp"
 #include "run_command.hpp"
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 #include <firtp/hal_shim/runtime.hpp>
 #include <firtp/messages.hpp>
@@ -40,7 +40,7 @@ std::string fifo_refused(int priority) {
 }  // namespace
 
 int serve_command(std::span<const std::string> args) {
-    const ChainOptions options = parse_serve_options(args);
+    const ComponentOptions options = parse_serve_options(args);
     if (options.plan.help) {
         std::cout << serve_help();
         return 0;
@@ -48,8 +48,8 @@ int serve_command(std::span<const std::string> args) {
     const MachineConfig machine = load_machine_config(options.plan);
     const std::string url = options.lcm_url.empty() ? messages::default_url() : options.lcm_url;
     const auto lcm = messages::open(url);
-    const ChainSettings settings = serve_chain_settings(machine, options.queue);
-    firtp::ServoChain chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
+    const InProcessSettings settings = serve_component_settings(machine, options.queue);
+    firtp::InProcessComponent chain(*lcm, machine, options.module.value_or(firtp::default_module_path()), settings);
     ConfigPublisher config(*lcm, config_message("serve", args, options, machine, settings));  // for recorders
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);

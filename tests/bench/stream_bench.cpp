@@ -6,7 +6,7 @@
 #include <firtp/host.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/messages.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -54,11 +54,11 @@ int main(int argc, char** argv) {
 
     // Component side: its own LCM endpoint, the servo thread on the real-time clock.
     auto component_lcm = messages::open(url);
-    ChainSettings settings;
+    InProcessSettings settings;
     settings.queue = blocks + 16;  // the stream is measured, not how fast the machine cuts
     settings.max_blocks = max_blocks;
     settings.plan_budget_us = 500;  // as firtp serve: half the period
-    ServoChain chain(*component_lcm, machine, default_module_path(), settings);
+    InProcessComponent chain(*component_lcm, machine, default_module_path(), settings);
     chain.start();
 
     std::atomic<bool> done{false};

@@ -5,7 +5,7 @@
 
 #include <firtp/machine.hpp>
 #include <firtp/messages.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 #include <gtest/gtest.h>
 
@@ -16,13 +16,13 @@ namespace firtp::test {
 
 struct Chain {
     std::unique_ptr<lcm::LCM> lcm = messages::open("memq://");
-    std::unique_ptr<ServoChain> chain;
+    std::unique_ptr<InProcessComponent> chain;
     std::vector<firtp_lcm::axis_state_t> states;
     std::vector<firtp_lcm::status_t> statuses;
     std::int64_t control_seq = 0;
 
     explicit Chain(const MachineConfig& machine) {
-        chain = std::make_unique<ServoChain>(*lcm, machine, default_module_path());
+        chain = std::make_unique<InProcessComponent>(*lcm, machine, default_module_path());
         messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Chain::on_state, this));
         messages::keep_everything(lcm->subscribe(messages::status_channel, &Chain::on_status, this));
     }

@@ -176,7 +176,7 @@ struct Network {
     MachineConfig machine = default_machine();
     std::unique_ptr<lcm::LCM> host_lcm = messages::open("memq://");
     std::unique_ptr<lcm::LCM> component_lcm = messages::open("memq://");
-    std::unique_ptr<ServoChain> chain;
+    std::unique_ptr<InProcessComponent> chain;
     Link to_component, to_host;
     std::vector<firtp_lcm::axis_state_t> states;  // the component's, every period (not through the link)
     std::vector<firtp_lcm::status_t> statuses;    // the component's, as sent
@@ -184,15 +184,15 @@ struct Network {
 
     // A component that holds 16 blocks and a stream of 16: the host can be about 30 blocks ahead,
     // so a program of 60 or more is still being sent while it runs.
-    static ChainSettings small() {
-        ChainSettings s;
+    static InProcessSettings small() {
+        InProcessSettings s;
         s.queue = 16;
         s.stream_depth = 16;
         return s;
     }
 
     Network(Faults down, Faults up, std::uint64_t seed)
-        : chain(std::make_unique<ServoChain>(*component_lcm, machine, default_module_path(), small())),
+        : chain(std::make_unique<InProcessComponent>(*component_lcm, machine, default_module_path(), small())),
           to_component(*host_lcm, *component_lcm, "FIRTP_BLOCK|FIRTP_CONTROL", down, seed),
           to_host(*component_lcm, *host_lcm, "FIRTP_STATUS", up, seed + 1) {
         messages::keep_everything(component_lcm->subscribe(messages::axis_state_channel, &Network::on_state, this));
@@ -477,7 +477,7 @@ TEST(LcmFaults, ComponentRestartMidProgramRunsNothingOfItAndTheHostFails) {
     const AxisVector before = net.position();
     const std::size_t states_before = net.states.size();
     net.chain.reset();  // the component side goes away ...
-    net.chain = std::make_unique<ServoChain>(*net.component_lcm, net.machine, default_module_path(), Network::small());
+    net.chain = std::make_unique<InProcessComponent>(*net.component_lcm, net.machine, default_module_path(), Network::small());
     EXPECT_EQ(net.run(h, 60000), host::Result::failed);
     EXPECT_NE(h.error().find("the component no longer has program 801"), std::string::npos) << h.error();
     EXPECT_LT(net.now - 3000, 2000);  // reported within 2 s

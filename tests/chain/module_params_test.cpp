@@ -2,7 +2,7 @@
 // names the parameter: not numbers, zero or negative where positive is needed, NaN, limits lists,
 // filter times the planner cannot be built for. Loaded through hal-shim as firtp-hal does.
 #include <firtp/hal_shim/runtime.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 #define RTAPI  // for rtapi_set_msg_handler, as hal-shim's own tests
 #include <rtapi.h>
 

@@ -3,7 +3,7 @@
 // speed they have, and it brakes them through the chain within the axis limits, reporting it.
 // Loaded through hal-shim, block pins only; a drive model closes the loop.
 #include <firtp/hal_shim/runtime.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include <firtp/host.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/planner.hpp>
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 #include <firtp/hal_shim/runtime.hpp>
 #include <hal.h>
 #include <tp_core.hpp>
@@ -365,7 +365,7 @@ Program random_program(std::uint64_t seed, int blocks, const AxisVector& start) 
 TEST(FirtpModuleRealTime, UpdateUnderHalShimNeitherAllocatesNorLocks) {
     auto lcm = messages::open("memq://");
     const MachineConfig machine = default_machine();
-    ServoChain chain(*lcm, machine, default_module_path());
+    InProcessComponent chain(*lcm, machine, default_module_path());
     Probe probe;
     std::int64_t periods = 0;
     host::HostOptions options;
@@ -418,7 +418,7 @@ TEST(FirtpModuleRealTime, UpdateUnderHalShimNeitherAllocatesNorLocks) {
 TEST(FirtpModuleRealTime, UpdateOnTheServoThreadNeitherAllocatesNorLocksWhileTheHostStreams) {
     auto lcm = messages::open("memq://");
     const MachineConfig machine = default_machine();
-    ServoChain chain(*lcm, machine, default_module_path());
+    InProcessComponent chain(*lcm, machine, default_module_path());
     Probe probe;
     const Program program = random_program(3, 15, AxisVector::Zero());
     host::HostOptions options;

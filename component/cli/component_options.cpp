@@ -1,4 +1,4 @@
-#include "chain_options.hpp"
+#include "component_options.hpp"
 
 #include "cli_errors.hpp"
 
@@ -25,7 +25,7 @@ po::options_description help_flag() {
     return d;
 }
 
-void read_transport(const po::variables_map& vm, ChainOptions& o) {
+void read_transport(const po::variables_map& vm, ComponentOptions& o) {
     if (vm.count("lcm-url")) o.lcm_url = vm["lcm-url"].as<std::string>();
     if (vm.count("module")) o.module = vm["module"].as<std::string>();
 }
@@ -62,9 +62,9 @@ po::options_description host_flags() {
 
 }  // namespace
 
-ChainOptions parse_run_options(std::span<const std::string> args) {
+ComponentOptions parse_run_options(std::span<const std::string> args) {
     const po::variables_map vm = parse_flags(args, run_flags(), "run", true);
-    ChainOptions o;
+    ComponentOptions o;
     read_machine_flags(vm, o.plan);
     read_output_flags(vm, o.plan);
     read_transport(vm, o);
@@ -72,9 +72,9 @@ ChainOptions parse_run_options(std::span<const std::string> args) {
     return o;
 }
 
-ChainOptions parse_serve_options(std::span<const std::string> args) {
+ComponentOptions parse_serve_options(std::span<const std::string> args) {
     const po::variables_map vm = parse_flags(args, serve_flags(), "serve", false);
-    ChainOptions o;
+    ComponentOptions o;
     read_machine_flags(vm, o.plan);
     read_transport(vm, o);
     o.exit_when_done = vm.count("exit-when-done") > 0;
@@ -93,9 +93,9 @@ ChainOptions parse_serve_options(std::span<const std::string> args) {
     return o;
 }
 
-ChainOptions parse_host_options(std::span<const std::string> args) {
+ComponentOptions parse_host_options(std::span<const std::string> args) {
     const po::variables_map vm = parse_flags(args, host_flags(), "host", true);
-    ChainOptions o;
+    ComponentOptions o;
     read_machine_flags(vm, o.plan);
     read_transport(vm, o);
     if (vm.count("csv")) o.plan.csv = vm["csv"].as<std::string>();

@@ -1,4 +1,4 @@
-#include <firtp/servo_chain.hpp>
+#include <firtp/in_process_component.hpp>
 
 
 #include <firtp/text_cat.hpp>
@@ -29,7 +29,7 @@ void check(const shim::Status& status, const std::string& what) {
 }
 
 // loadrt arguments that give firtp.so exactly the machine's planner settings.
-std::vector<std::string> module_arguments(const MachineConfig& machine, const ChainSettings& settings) {
+std::vector<std::string> module_arguments(const MachineConfig& machine, const InProcessSettings& settings) {
     const PlannerParameters p = machine.planner_parameters();
     std::vector<std::string> args{
         cat("axes=", std::to_string(machine.limits.axes)),
@@ -71,8 +71,8 @@ std::filesystem::path default_module_path() {
     return std::filesystem::exists(lib / "firtp" / "firtp.so", error) ? lib / "firtp" / "firtp.so" : lib / "firtp.so";
 }
 
-ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
-                       const ChainSettings& settings) {
+InProcessComponent::InProcessComponent(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
+                       const InProcessSettings& settings) {
     const long period_ns = std::lround(machine.period * 1e9);
     check(shim::load_module("threads", {"name1=servo-thread", cat("period1=", std::to_string(period_ns))}),
           "creating the servo thread");
@@ -97,23 +97,23 @@ ServoChain::ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::f
     check(shim::add_funct("firtp.update", "servo-thread"), "addf firtp.update servo-thread");
 }
 
-ServoChain::~ServoChain() {
+InProcessComponent::~InProcessComponent() {
     if (started_) shim::stop_threads();
     bridge_.reset();
     shim::unload_module("all");
     shim::delete_thread("servo-thread");  // so another chain can be built in this process
 }
 
-void ServoChain::step() { check(shim::step(1), "servo period"); }
+void InProcessComponent::step() { check(shim::step(1), "servo period"); }
 
-void ServoChain::start() {
+void InProcessComponent::start() {
     check(shim::start_threads(), "starting the servo thread");
     started_ = true;
 }
 
-void ServoChain::poll() { bridge_->poll(); }
+void InProcessComponent::poll() { bridge_->poll(); }
 
-long ServoChain::update_time_ns() const {
+long InProcessComponent::update_time_ns() const {
     shim::Value value;
     return shim::get_value("firtp.update.time", value).ok() ? static_cast<long>(value.as_double()) : -1;
 }

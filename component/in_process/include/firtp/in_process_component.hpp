@@ -14,22 +14,22 @@ namespace firtp {
 std::filesystem::path default_module_path();
 
 // firtp.so settings beyond the machine's (loadrt firtp queue=... max_blocks=...).
-struct ChainSettings {
+struct InProcessSettings {
     int queue = 1024;      // blocks the component holds
     int max_blocks = 32;   // stream blocks planned per servo period at most
     int plan_budget_us = 0;  // and only within this planning time (0: no limit, for stepped runs)
     int stream_depth = 4096; // records the block stream holds: with queue, how far ahead a host may send
 };
 
-class ServoChain {
+class InProcessComponent {
 public:
     // Loads firtp.so with the machine's settings, creates the bridge and nets them. Throws
     // std::runtime_error naming the step that failed.
-    ServoChain(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
-               const ChainSettings& settings = {});
-    ~ServoChain();
-    ServoChain(const ServoChain&) = delete;
-    ServoChain& operator=(const ServoChain&) = delete;
+    InProcessComponent(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
+               const InProcessSettings& settings = {});
+    ~InProcessComponent();
+    InProcessComponent(const InProcessComponent&) = delete;
+    InProcessComponent& operator=(const InProcessComponent&) = delete;
 
     void step();   // one servo period in this thread (deterministic, no clock)
     void start();  // or: the servo thread on the real-time clock
