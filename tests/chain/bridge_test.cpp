@@ -20,18 +20,11 @@ using test::block_message;
 
 namespace {
 
-// Short filters and no axis limits: these tests are about messages, not motion.
-MachineConfig machine() {
-    MachineConfig m = default_machine();
-    m.given_times = {0.02, 0.01};
-    m.limits = MachineLimits{};
-    return m;
-}
 
 }  // namespace
 
 TEST(Bridge, RunsAProgramAndReportsProgress) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(10, 0, 5, 1, 11));
     chain.publish(block_message(10, 10, 5, 2, 12));
     chain.run(400);
@@ -48,7 +41,7 @@ TEST(Bridge, RunsAProgramAndReportsProgress) {
 }
 
 TEST(Bridge, NanBlockIsRefusedNamingSeqAndLineAndStopsTheProgram) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(20, 0, 5, 1, 11));
     firtp_lcm::block_t bad = block_message(20, 20, 5, 2, 12);
     bad.target[1] = std::numeric_limits<double>::quiet_NaN();
@@ -71,7 +64,7 @@ TEST(Bridge, NanBlockIsRefusedNamingSeqAndLineAndStopsTheProgram) {
 }
 
 TEST(Bridge, GapIsReportedAndTheResentBlockRunsOnce) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(10, 0, 5, 1, 11));
     chain.publish(block_message(0, 0, 5, 3, 13));  // seq 2 lost on the way
     chain.run(20);
@@ -90,7 +83,7 @@ TEST(Bridge, GapIsReportedAndTheResentBlockRunsOnce) {
 }
 
 TEST(Bridge, LateCopyOfAnEarlierProgramNeverRunsAgain) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(10, 0, 5, 1, 11));
     chain.run(300);
     chain.publish(block_message(0, 10, 6, 1, 21));
@@ -104,7 +97,7 @@ TEST(Bridge, LateCopyOfAnEarlierProgramNeverRunsAgain) {
 }
 
 TEST(Bridge, ControlOfANewHostSessionTakesEffectAndOldMessagesDoNot) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.control(0.5, false, false, 1);
     chain.control(0.5, false, false, 1);
     chain.run(2);
@@ -124,7 +117,7 @@ TEST(Bridge, ControlOfANewHostSessionTakesEffectAndOldMessagesDoNot) {
 }
 
 TEST(Bridge, HoldStopsOnThePathAndResumes) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(30, 0, 5, 1, 11));
     chain.run(100);
     chain.control(1.0, true, false);
@@ -141,7 +134,7 @@ TEST(Bridge, HoldStopsOnThePathAndResumes) {
 }
 
 TEST(Bridge, AbortDropsTheQueueAndANewProgramStartsFromThere) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(30, 0, 5, 1, 11));
     chain.publish(block_message(30, 30, 5, 2, 12));
     chain.run(100);
@@ -187,7 +180,7 @@ std::string crc_text(const std::vector<std::uint8_t>& bytes) {
 // stays, so the block after it is a gap, exactly as if it had been lost; the resent block runs,
 // once, to its real target.
 TEST(Bridge, CorruptedBlockIsRefusedLikeALostOneAndTheResendRunsOnce) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     chain.publish(block_message(10, 0, 5, 1, 11));
     const std::vector<std::uint8_t> damaged = damaged_block(block_message(10, 10, 5, 2, 12));
     {
@@ -226,7 +219,7 @@ TEST(Bridge, CorruptedBlockIsRefusedLikeALostOneAndTheResendRunsOnce) {
 // A control damaged on the way (feed override 0.5 -> 1.0 by one bit) is ignored, the override in
 // effect stays, and it is reported; the next intact one takes effect.
 TEST(Bridge, CorruptedControlIsIgnoredAndReported) {
-    test::Chain chain(machine());
+    test::Chain chain(test::message_machine());
     firtp_lcm::control_t c{};
     c.session = 1;
     c.seq = 1;
@@ -252,7 +245,7 @@ namespace {
 // Five blocks from the real host through a relay that damages the first copy of block `damaged_seq`
 // (its X target 10 -> 20: a bit flip that leaves a valid block); statuses and axis states back.
 struct HostRun {
-    test::Chain chain{machine()};
+    test::Chain chain{test::message_machine()};
     int copies = 0;  // of the damaged seq that passed the relay
     host::Result result = host::Result::running;
     host::Statistics statistics;

@@ -78,4 +78,12 @@ inline firtp_lcm::block_t block_message(double x, double y, std::int64_t program
     return messages::to_message(b, program, seq, 0);
 }
 
+// Short filters and no axis limits: for tests about messages, not motion.
+inline MachineConfig message_machine() {
+    MachineConfig m = default_machine();
+    m.given_times = {0.02, 0.01};
+    m.limits = MachineLimits{};
+    return m;
+}
+
 }  // namespace firtp::test

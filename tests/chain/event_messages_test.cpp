@@ -17,16 +17,10 @@ using test::block_message;
 
 namespace {
 
-MachineConfig machine() {
-    MachineConfig m = default_machine();
-    m.given_times = {0.02, 0.01};
-    m.limits = MachineLimits{};
-    return m;
-}
 
 struct EventChain : test::Chain {
     std::vector<firtp_lcm::event_t> reached;
-    EventChain() : Chain(machine()) {
+    EventChain() : Chain(test::message_machine()) {
         messages::keep_everything(lcm->subscribe(messages::event_reached_channel, &EventChain::on_reached, this));
     }
     void on_reached(const lcm::ReceiveBuffer* b, const std::string& c) { reached.push_back(intact<firtp_lcm::event_t>(b, c)); }

@@ -2,6 +2,7 @@
 // errors that stop the program on the path, abort, disable.
 #include "support/limits.hpp"
 #include "support/reference.hpp"
+#include "streamed.hpp"
 
 #include <firtp/hal/component_core.hpp>
 #include <firtp/measure.hpp>
@@ -60,14 +61,7 @@ stream::BlockRecord record(const Block& b, std::uint64_t program, std::uint64_t 
     return r;
 }
 
-// Through the hal_stream record, as the bridge writes it.
-stream::BlockRecord streamed(const stream::BlockRecord& r) {
-    hal_stream_data buffer[stream::block_elements];
-    stream::pack(r, buffer);
-    stream::BlockRecord out;
-    stream::unpack(buffer, out);
-    return out;
-}
+using test::streamed;  // through the hal_stream record, as the bridge writes it
 
 struct Servo {
     explicit Servo(const ComponentSettings& s = settings()) : core(s) {}

@@ -2,6 +2,7 @@
 // waiting at a tool change and a pause, a dwell resting as the plan does.
 #include "support/limits.hpp"
 #include "support/reference.hpp"
+#include "streamed.hpp"
 
 #include <firtp/hal/component_core.hpp>
 #include <firtp/trajectory.hpp>
@@ -53,14 +54,7 @@ Block move(double x, double y, Termination termination, std::int64_t line) {
     return b;
 }
 
-// Through the hal_stream record, as the bridge writes it.
-stream::BlockRecord streamed(const stream::BlockRecord& r) {
-    hal_stream_data buffer[stream::block_elements];
-    stream::pack(r, buffer);
-    stream::BlockRecord out;
-    stream::unpack(buffer, out);
-    return out;
-}
+using test::streamed;  // through the hal_stream record, as the bridge writes it
 
 struct Program {
     std::deque<stream::BlockRecord> records;
