@@ -17,7 +17,7 @@
 #   `halcmd loadrt <name>` once installed. SOURCES are compiled as Makefile.modinc compiles a module
 #   (-DUSPACE -DRTAPI -D_GNU_SOURCE -Drealtime -D__MODULE__ -DSIM -fPIC -fno-fast-math ...) against
 #   LinuxCNC's headers (never hal-shim's: do not put targets that carry hal-shim's include
-#   directory, such as firtp_hal_component or firtp_component_core, in LIBS). LIBS (static
+#   directory, such as firtp_hal_component or firtp_component_logic, in LIBS). LIBS (static
 #   libraries such as firtp_core, built -fPIC) are linked into the module. The module is linked
 #   -shared -Bsymbolic with a version script that exports only rtapi_app_main, rtapi_app_exit,
 #   rtapi_info_* (module information and parameters, read by rtapi_app with dlsym) and EXPORTS

@@ -8,7 +8,7 @@
 //
 // Every load-time setting, as in effect, is a read-only param: halcmd show param firtp (man 9 firtp).
 //
-// Principle of operation (see component_core.hpp): blocks come in through the firtp.block.*
+// Principle of operation (see component_logic.hpp): blocks come in through the firtp.block.*
 // pins with a strobe/ack handshake, or many per period through the hal_stream `block_key` that
 // the LCM bridge writes. Each is checked and planned when accepted; every period firtp.update
 // advances the FIR chain and drives firtp.axis.N.{pos,vel,acc}-cmd. Every period's axis state
@@ -23,7 +23,7 @@
 #include "rtapi_app.h"
 #include "hal.h"
 
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/hal/module_number.hpp>
 #include <firtp/hal/pin_table.hpp>
 #include <firtp/hal/hal_pin_access.hpp>
@@ -132,7 +132,7 @@ struct Params {
 
 int comp_id = -1;
 Pins* pins = nullptr;
-firtp::ComponentCore* core = nullptr;
+firtp::ComponentLogic* core = nullptr;
 hal_stream_t block_stream;
 hal_stream_t state_stream;
 bool has_block_stream = false;
@@ -406,7 +406,7 @@ extern "C" int rtapi_app_main(void) {
     firtp::ComponentSettings settings;
     try {
         settings = settings_from_parameters();
-        core = new firtp::ComponentCore(settings);  // init only, never in the servo thread
+        core = new firtp::ComponentLogic(settings);  // init only, never in the servo thread
     } catch (const std::exception& e) {
         return fail(e.what());
     }

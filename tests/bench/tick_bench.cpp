@@ -1,5 +1,5 @@
 // Worst-case time per servo tick over a long run: firtp's servo-thread function body
-// (ComponentCore::update: planning on acceptance, the FIR chain, status) driven by random programs
+// (ComponentLogic::update: planning on acceptance, the FIR chain, status) driven by random programs
 // with overrides, holds, aborts and stream faults (tests/realtime/random_operation.hpp).
 //
 //   build/bin/firtp_tick_bench [--ticks N] [--runs R] [--seed S] [--machine limits|free]
@@ -48,7 +48,7 @@ Run run_once(const ComponentSettings& settings, std::uint64_t seed, std::int64_t
     Run r;
     r.ns.resize(static_cast<std::size_t>(ticks));
     r.planned.resize(static_cast<std::size_t>(ticks));
-    ComponentCore core(settings);
+    ComponentLogic core(settings);
     test::StreamRing ring;
     test::OperationOptions options;
     options.blocks_per_tick = per_tick;
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
         std::printf("SCHED_FIFO %s, mlockall %s\n", rt ? "on" : "refused", locked ? "on" : "refused");
     }
     const ComponentSettings settings = test::operation_settings(limits);
-    std::printf("firtp_tick_bench: ComponentCore::update, %s, %lld ticks (%.2f h of motion at %.0f Hz), seed %llu, %d runs, up to %d blocks "
+    std::printf("firtp_tick_bench: ComponentLogic::update, %s, %lld ticks (%.2f h of motion at %.0f Hz), seed %llu, %d runs, up to %d blocks "
                 "into the stream a period\n",
                 limits ? "built-in machine with limits (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3), override up to 150 %"
                        : "T1 148 / T2 89 ms, no limits",

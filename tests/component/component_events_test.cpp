@@ -4,7 +4,7 @@
 #include "support/reference.hpp"
 #include "streamed.hpp"
 
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/trajectory.hpp>
 
 #include <gtest/gtest.h>
@@ -80,7 +80,7 @@ struct Program {
 
 struct Servo {
     explicit Servo(const ComponentSettings& s) : core(s) {}
-    ComponentCore core;
+    ComponentLogic core;
     FakeStream stream;
     ComponentInputs in;
     ComponentOutputs out;

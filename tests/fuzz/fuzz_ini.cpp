@@ -1,7 +1,7 @@
 // libFuzzer target: the INI reader and the machine it describes (IniFile::parse, load_machine).
 // Any input either gives a ConfigError or a machine the planner and the component accept: valid
-// filter times (or, at the limits, an acceleration limit), rate settings, a positive period, finite limits; ComponentCore takes it.
-#include <firtp/hal/component_core.hpp>
+// filter times (or, at the limits, an acceleration limit), rate settings, a positive period, finite limits; ComponentLogic takes it.
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/fir_chain.hpp>
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     s.planner.queue_capacity = 4;
     s.default_tolerance = m.default_tolerance;
     try {
-        firtp::ComponentCore core(s);  // what firtp run / serve load with this INI
+        firtp::ComponentLogic core(s);  // what firtp run / serve load with this INI
     } catch (const std::invalid_argument&) {
         std::abort();  // the INI reader accepted a machine the component refuses
     }

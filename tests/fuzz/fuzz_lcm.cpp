@@ -2,7 +2,7 @@
 // do it. The input is a sequence of messages, each [kind][length, 2 bytes big-endian][bytes]:
 //   kind % 4 == 0: a FIRTP_BLOCK message -> messages::receive (the crc of the bytes as received,
 //                  then the decode), messages::validate, the exactly-once SequenceChecker, then the
-//                  component's block stream (ComponentCore accepts it)
+//                  component's block stream (ComponentLogic accepts it)
 //   kind % 4 == 1: a FIRTP_CONTROL message -> messages::receive, the bridge's checks, the control pins
 //   kind % 4 == 2: run the servo thread for (length % 512) periods, no bytes
 //   kind % 4 == 3: a FIRTP_STATUS or FIRTP_AXIS_STATE message -> messages::receive (what the host reads)
@@ -17,7 +17,7 @@
 // the planner refuses a pulse longer than its clock, 1e16 periods); the component's output stays
 // finite; the blocks it runs are exactly the ones the sequence checker passed, once each, in order
 // (next_seq).
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/messages.hpp>
 
 #include <algorithm>
@@ -95,7 +95,7 @@ firtp::messages::Received<Message> receive_checked(const std::vector<std::uint8_
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const firtp::ComponentSettings component_settings = settings();
-    firtp::ComponentCore core(component_settings);
+    firtp::ComponentLogic core(component_settings);
     firtp::messages::SequenceChecker sequence;
     Ring ring;
     firtp::ComponentInputs in;

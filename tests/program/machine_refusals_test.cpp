@@ -3,7 +3,7 @@
 // window too long for the planner) and limit keys that are misspelt. The per-value checks (zero,
 // negative, NaN, not a number, unknown [FIRTP] keys) are in machine_test.cpp.
 #include "machine_test_support.hpp"
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/machine.hpp>
 
 #include <gtest/gtest.h>
@@ -94,7 +94,7 @@ TEST(MachineRefusals, AcceptedMachinesBuildTheComponent) {
         firtp::ComponentSettings s;
         s.planner = m.planner_parameters();
         s.planner.queue_capacity = 8;
-        EXPECT_NO_THROW(firtp::ComponentCore core(s)) << text;
+        EXPECT_NO_THROW(firtp::ComponentLogic core(s)) << text;
     }
 }
 
@@ -106,7 +106,7 @@ TEST(MachineRefusals, ComponentRefusesAWindowTooLong) {
     s.planner.filters.T = {15.0, 10.0, 0.0, 0.0};
     s.planner.queue_capacity = 8;
     try {
-        firtp::ComponentCore core(s);
+        firtp::ComponentLogic core(s);
         FAIL() << "accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_STREQ(e.what(), "the filter delay T1 + ... + Tn is longer than 20000 servo periods (20 s at 1 ms)");

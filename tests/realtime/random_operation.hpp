@@ -1,9 +1,9 @@
-// Random programs and a random operator for the component's servo-thread logic (ComponentCore),
+// Random programs and a random operator for the component's servo-thread logic (ComponentLogic),
 // shared by the real-time proof (tests/realtime), the worst-tick benchmark (tests/bench) and the
 // soak (tests/soak).
 //
 // Per servo period: before_tick() feeds the block stream (a fixed ring, as hal_stream) and moves
-// the operator's controls; the caller runs ComponentCore::update; after_tick() checks the output.
+// the operator's controls; the caller runs ComponentLogic::update; after_tick() checks the output.
 // Programs: random straight moves (0.01-40 mm, 40 % of them below 0.2 mm, 20-400 mm/s, tolerance 0.002-0.5 mm, some exact
 // stops, traverses, zero-length and dense short blocks) in a box, sent with program id and seq.
 // The operator: feed override (0 to the highest override), holds and resumes, aborts, disabling,
@@ -15,7 +15,7 @@
 // (next_seq = blocks + 1; each repeat refused). Nothing here allocates after construction.
 #pragma once
 
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/machine.hpp>
 
 #include <algorithm>
@@ -115,7 +115,7 @@ public:
 
     const OperationStats& stats() const { return stats_; }
     bool ok() const { return stats_.violations == 0; }
-    // What the next ComponentCore::update gets.
+    // What the next ComponentLogic::update gets.
     const ComponentInputs& inputs() const { return in_; }
 
     // Feeds the stream and moves the operator's controls for the next period.

@@ -1,7 +1,7 @@
 // Real-time proof: the servo-thread calls make no heap allocation and take no lock, over long
 // random programs with overrides, holds, aborts, disabling and stream faults. Counted by hooks in
 // this program (rt_probe.hpp), armed around the servo-thread calls only:
-//   ComponentCore::update (the component's real-time logic, planning on acceptance included),
+//   ComponentLogic::update (the component's real-time logic, planning on acceptance included),
 //   Planner::add and update, TpCore's servo-thread calls (firtp_tp's tpRunCycle, tpAdd*, tpPause ...),
 //   and firtp.update itself in firtp.so, run by hal-shim's servo thread (stepped, and on the
 //   real-time clock while the host and the bridge stream over LCM in another thread).
@@ -100,14 +100,14 @@ TEST(RtProbe, CountsAllocationsFreesAndLocksOfTheArmedThreadOnly) {
     EXPECT_EQ(none.locks, 0);
 }
 
-// ComponentCore::update over 30 simulated minutes of random programs on two machines: with axis
+// ComponentLogic::update over 30 simulated minutes of random programs on two machines: with axis
 // limits (planned on the samples) and without (closed-form overlaps).
 class ComponentRealTime : public ::testing::TestWithParam<bool> {};
 
 TEST_P(ComponentRealTime, UpdateNeitherAllocatesNorLocks) {
     const bool limits = GetParam();
     const ComponentSettings settings = test::operation_settings(limits);
-    ComponentCore core(settings);
+    ComponentLogic core(settings);
     test::StreamRing ring;
     test::OperationOptions options;
     options.max_program_blocks = 120;
@@ -127,7 +127,7 @@ TEST_P(ComponentRealTime, UpdateNeitherAllocatesNorLocks) {
     }
     const test::OperationStats& s = op.stats();
     EXPECT_TRUE(op.ok()) << s.first_violation;
-    expect_clean(totals, limits ? "ComponentCore::update, machine with limits" : "ComponentCore::update, no limits");
+    expect_clean(totals, limits ? "ComponentLogic::update, machine with limits" : "ComponentLogic::update, no limits");
     std::printf("  %lld ticks, %lld blocks, %lld programs: %lld completed, %lld aborted, %lld disabled (%lld braked), %lld faults "
                 "(gap, NaN), %lld repeats refused; %lld overrides, %lld holds; end error %.3g mm; |v|,|a|/limit %.6f\n",
                 static_cast<long long>(s.ticks), static_cast<long long>(s.blocks), static_cast<long long>(s.programs),

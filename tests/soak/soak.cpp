@@ -1,4 +1,4 @@
-// Long run of the component's servo-thread logic (ComponentCore::update: planning on acceptance,
+// Long run of the component's servo-thread logic (ComponentLogic::update: planning on acceptance,
 // FIR chain, sequence checks) over random programs with overrides, holds, aborts, disabling and
 // stream faults (tests/realtime/random_operation.hpp), alternating two machines (built-in with
 // axis limits; the paper's filters without limits) every `--segment` ticks.
@@ -34,12 +34,12 @@ long rss_kib() {
 
 struct Machine {
     ComponentSettings settings;
-    std::unique_ptr<ComponentCore> core;
+    std::unique_ptr<ComponentLogic> core;
     test::StreamRing ring;
     std::unique_ptr<test::RandomOperation> op;
     ComponentOutputs out;
     Machine(bool limits, std::uint64_t seed) : settings(test::operation_settings(limits)) {
-        core = std::make_unique<ComponentCore>(settings);
+        core = std::make_unique<ComponentLogic>(settings);
         op = std::make_unique<test::RandomOperation>(settings, seed);
     }
     bool run(std::int64_t ticks) {

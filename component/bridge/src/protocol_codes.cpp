@@ -2,7 +2,7 @@
 // state and error-code pins into status_t unchanged, and attaches to its streams by these keys.
 #include <firtp/bridge.hpp>
 
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/hal/stream_records.hpp>
 
 namespace firtp {

@@ -1,4 +1,4 @@
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -25,11 +25,11 @@ bool next_record(BlockSource& source, stream::BlockRecord& record) {
     return source.read != nullptr && source.read(source.context, record);
 }
 
-ComponentCore::ComponentCore(const ComponentSettings& settings)
+ComponentLogic::ComponentLogic(const ComponentSettings& settings)
     : settings_(checked(settings)), planner_(settings.planner, AxisVector::Zero()),
       braking_(settings.planner.fixed_chain ? braking_peaks(planner_.chain()) : BrakingPeaks{}) {}
 
-void ComponentCore::fail(ComponentError error) {
+void ComponentLogic::fail(ComponentError error) {
     error_ = error;
     halted_ = unchecked_halted_ = true;
     ++rejected_;
@@ -40,21 +40,21 @@ void ComponentCore::fail(ComponentError error) {
     }
 }
 
-void ComponentCore::drop_everything(const AxisVector& at) {
+void ComponentLogic::drop_everything(const AxisVector& at) {
     planner_.reset(at);
     events_.clear(event_state_);
     aborting_ = false;
     halted_ = unchecked_halted_ = true;  // the interrupted program must not continue from here
 }
 
-AxisVector ComponentCore::feedback(const AxisVector& pins, const AxisVector& otherwise) const {
+AxisVector ComponentLogic::feedback(const AxisVector& pins, const AxisVector& otherwise) const {
     AxisVector value = otherwise;
     for (int a = 0; a < settings_.axes; ++a)
         if (std::isfinite(pins[a])) value[a] = pins[a];
     return value;
 }
 
-void ComponentCore::take_over(const ComponentInputs& in) {
+void ComponentLogic::take_over(const ComponentInputs& in) {
     const AxisVector at = feedback(in.position_feedback, last_.state.position);
     const AxisVector velocity = feedback(in.velocity_feedback, AxisVector::Zero());
     planner_.reset(at);
@@ -69,7 +69,7 @@ void ComponentCore::take_over(const ComponentInputs& in) {
     }
 }
 
-bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) {
+bool ComponentLogic::accept(const stream::BlockRecord& record, bool from_stream) {
     const bool new_program = record.seq != 0 && record.program != program_;
     if (new_program) {
         if (!planner_.idle() || aborting_) {
@@ -113,7 +113,7 @@ bool ComponentCore::accept(const stream::BlockRecord& record, bool from_stream) 
     return true;
 }
 
-bool ComponentCore::accept_event(const stream::BlockRecord& record) {
+bool ComponentLogic::accept_event(const stream::BlockRecord& record) {
     const Event event{static_cast<EventCode>(record.event_code), record.event_value, record.block.line,
                       planner_.accepted()};
     if (!std::isfinite(event.value) || (event.code == EventCode::dwell && !(event.value >= 0.0 && event.value <= max_dwell))) {
@@ -129,7 +129,7 @@ bool ComponentCore::accept_event(const stream::BlockRecord& record) {
     return true;
 }
 
-int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) {
+int ComponentLogic::refuse_inputs(const ComponentInputs& in, BlockSource source) {
     stream::BlockRecord record;
     int refused = 0;
     while (refused < settings_.max_blocks_per_period && next_record(source, record)) ++refused;
@@ -139,7 +139,7 @@ int ComponentCore::refuse_inputs(const ComponentInputs& in, BlockSource source) 
     return refused;
 }
 
-void ComponentCore::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
+void ComponentLogic::update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out) {
     if (!in.enable) {
         const AxisVector at = feedback(in.position_feedback, last_.state.position);
         if (enabled_ || !started_) drop_everything(at);  // drives are off: no deceleration, no queue

@@ -4,7 +4,7 @@
 #include "support/reference.hpp"
 #include "streamed.hpp"
 
-#include <firtp/hal/component_core.hpp>
+#include <firtp/hal/component_logic.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
 
@@ -65,7 +65,7 @@ using test::streamed;  // through the hal_stream record, as the bridge writes it
 
 struct Servo {
     explicit Servo(const ComponentSettings& s = settings()) : core(s) {}
-    ComponentCore core;
+    ComponentLogic core;
     FakeStream stream;
     ComponentInputs in;
     ComponentOutputs out;
@@ -85,7 +85,7 @@ struct Servo {
 
 }  // namespace
 
-TEST(ComponentCore, StreamedBlocksGiveThePlannedTrajectory) {
+TEST(ComponentLogic, StreamedBlocksGiveThePlannedTrajectory) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 7, i + 1));
@@ -102,10 +102,10 @@ TEST(ComponentCore, StreamedBlocksGiveThePlannedTrajectory) {
     EXPECT_EQ(run.out.rejected, 0u);
 }
 
-TEST(ComponentCore, PlansAtMostTheConfiguredBlocksPerPeriod) {
+TEST(ComponentLogic, PlansAtMostTheConfiguredBlocksPerPeriod) {
     ComponentSettings s = settings();
     s.max_blocks_per_period = 3;
-    ComponentCore core(s);
+    ComponentLogic core(s);
     FakeStream stream;
     for (std::uint32_t i = 0; i < 10; ++i) {
         Block b = diamond()[i % 4];
@@ -118,7 +118,7 @@ TEST(ComponentCore, PlansAtMostTheConfiguredBlocksPerPeriod) {
     EXPECT_EQ(out.next_seq, 4u);
 }
 
-TEST(ComponentCore, GapStopsOnThePathAndRefusesTheRestUntilANewProgram) {
+TEST(ComponentLogic, GapStopsOnThePathAndRefusesTheRestUntilANewProgram) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     run.stream.records.push_back(record(blocks[0], 1, 1));
@@ -142,7 +142,7 @@ TEST(ComponentCore, GapStopsOnThePathAndRefusesTheRestUntilANewProgram) {
     EXPECT_EQ(run.samples.back().position, xyz(0, 0));
 }
 
-TEST(ComponentCore, RepeatedBlockIsNotRunTwice) {
+TEST(ComponentLogic, RepeatedBlockIsNotRunTwice) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     run.stream.records.push_back(record(blocks[0], 1, 1));
@@ -155,7 +155,7 @@ TEST(ComponentCore, RepeatedBlockIsNotRunTwice) {
     EXPECT_EQ(run.samples.back().position, xyz(50, 0));
 }
 
-TEST(ComponentCore, BadValueOrTypeStopsTheProgram) {
+TEST(ComponentLogic, BadValueOrTypeStopsTheProgram) {
     for (int kind = 0; kind < 2; ++kind) {
         Servo run;
         const std::vector<Block> blocks = diamond();
@@ -173,7 +173,7 @@ TEST(ComponentCore, BadValueOrTypeStopsTheProgram) {
     }
 }
 
-TEST(ComponentCore, PinHandshakeTakesOneBlockPerStrobe) {
+TEST(ComponentLogic, PinHandshakeTakesOneBlockPerStrobe) {
     Servo run;
     run.in.strobe = true;
     run.in.pin_block.block = diamond()[0];
@@ -190,7 +190,7 @@ TEST(ComponentCore, PinHandshakeTakesOneBlockPerStrobe) {
     EXPECT_EQ(run.samples.back().position, xyz(50, 0));
 }
 
-TEST(ComponentCore, AbortStopsOnThePathAndDropsTheQueue) {
+TEST(ComponentLogic, AbortStopsOnThePathAndDropsTheQueue) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
@@ -207,7 +207,7 @@ TEST(ComponentCore, AbortStopsOnThePathAndDropsTheQueue) {
     EXPECT_EQ(run.samples.back().position, xyz(0, 0));
 }
 
-TEST(ComponentCore, DisableStopsAtOnceAndDropsEverything) {
+TEST(ComponentLogic, DisableStopsAtOnceAndDropsEverything) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
@@ -223,7 +223,7 @@ TEST(ComponentCore, DisableStopsAtOnceAndDropsEverything) {
     EXPECT_EQ(run.samples.back().position, at);  // nothing of the old program resumes
 }
 
-TEST(ComponentCore, ProgramIdsAndSeqsKeepAll64BitsThroughTheStream) {
+TEST(ComponentLogic, ProgramIdsAndSeqsKeepAll64BitsThroughTheStream) {
     // Host ids are microseconds: two programs 2^32 us (71.6 min) apart share their low 32 bits.
     const std::uint64_t first = 0x0000'1234'8000'0001, second = first + (std::uint64_t{1} << 32);
     const std::uint64_t high_seq = (std::uint64_t{1} << 32) + 3;
@@ -246,7 +246,7 @@ TEST(ComponentCore, ProgramIdsAndSeqsKeepAll64BitsThroughTheStream) {
 }
 
 // Drives off: the axes may be pushed by hand; the outputs follow them, so enabling moves nothing.
-TEST(ComponentCore, WhileDisabledTheOutputsFollowTheFeedbackAndEnablingMovesNothing) {
+TEST(ComponentLogic, WhileDisabledTheOutputsFollowTheFeedbackAndEnablingMovesNothing) {
     Servo run;
     const std::vector<Block> blocks = diamond();
     for (std::uint32_t i = 0; i < blocks.size(); ++i) run.stream.records.push_back(record(blocks[i], 1, i + 1));
@@ -276,7 +276,7 @@ TEST(ComponentCore, WhileDisabledTheOutputsFollowTheFeedbackAndEnablingMovesNoth
 
 // Pin blocks with seq 0 carry no program: after a disable the enable's rise lets them run again
 // (before, a disable refused every later seq-0 block for good).
-TEST(ComponentCore, PinBlocksRunAgainOnceEnableRises) {
+TEST(ComponentLogic, PinBlocksRunAgainOnceEnableRises) {
     Servo run;
     run.in.enable = false;  // LinuxCNC starts with the machine off
     run.ticks(10);
@@ -304,7 +304,7 @@ void moving_at(Servo& run, const AxisVector& p, const AxisVector& v) {
 
 }  // namespace
 
-TEST(ComponentCore, StartingWhileTheAxesMoveBrakesFromTheFeedbackWithinTheLimits) {
+TEST(ComponentLogic, StartingWhileTheAxesMoveBrakesFromTheFeedbackWithinTheLimits) {
     const AxisVector p = xyz(40.0, -12.0, 3.0), v = xyz(120.0, -80.0, 0.0);
     Servo run(limited());
     moving_at(run, p, v);
@@ -336,7 +336,7 @@ TEST(ComponentCore, StartingWhileTheAxesMoveBrakesFromTheFeedbackWithinTheLimits
 }
 
 // Faster than the machine can stop through the chain: the share that it can stop, within limits.
-TEST(ComponentCore, TooFastAFeedbackVelocityIsBrakedFromTheShareTheLimitsAllow) {
+TEST(ComponentLogic, TooFastAFeedbackVelocityIsBrakedFromTheShareTheLimitsAllow) {
     const AxisVector p = xyz(0.0, 0.0, 0.0), v = xyz(400.0, 0.0, 0.0);  // max_velocity 250
     Servo run(limited());
     moving_at(run, p, v);
@@ -348,7 +348,7 @@ TEST(ComponentCore, TooFastAFeedbackVelocityIsBrakedFromTheShareTheLimitsAllow) 
 }
 
 // Encoder noise below brake_speed: a start at rest, exactly on the feedback.
-TEST(ComponentCore, FeedbackSlowerThanTheBrakeSpeedStartsAtRest) {
+TEST(ComponentLogic, FeedbackSlowerThanTheBrakeSpeedStartsAtRest) {
     const AxisVector p = xyz(1.25, 2.5, -3.75);
     Servo run(limited());
     moving_at(run, p, xyz(0.9, -0.9, 0.0));

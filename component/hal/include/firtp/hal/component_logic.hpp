@@ -77,11 +77,11 @@ struct BlockSource {
     void* context = nullptr;
 };
 
-class ComponentCore {
+class ComponentLogic {
 public:
-    explicit ComponentCore(const ComponentSettings& settings);  // throws std::invalid_argument (init only)
-    ComponentCore(const ComponentCore&) = delete;
-    ComponentCore& operator=(const ComponentCore&) = delete;
+    explicit ComponentLogic(const ComponentSettings& settings);  // throws std::invalid_argument (init only)
+    ComponentLogic(const ComponentLogic&) = delete;
+    ComponentLogic& operator=(const ComponentLogic&) = delete;
 
     // One servo period; real-time: no allocation, locks, I/O or exceptions.
     void update(const ComponentInputs& in, BlockSource source, ComponentOutputs& out);
