@@ -18,7 +18,7 @@ struct ComponentOptions {
     bool exit_when_done = false;                   // serve --exit-when-done
     double duration = 0.0;                         // serve --duration S (0: until interrupted)
     int rt_priority = 80;                          // serve --rt-prio N: SCHED_FIFO N where allowed (0: normal)
-    int queue = 1024;                              // serve --queue N: blocks the component holds (InProcessSettings)
+    int queue = defaults::queue;                   // serve --queue N: blocks the component holds (InProcessSettings)
     double max_feed = 1.5;                         // host --max-feed
 };
 

@@ -70,9 +70,9 @@ static char* max_jerk = nullptr;
 RTAPI_MP_STRING(max_jerk, "per-axis jerk limits, units/s^3, comma separated");
 static int plan_budget_us = 0;
 RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (0: up to max_blocks)");
-static int queue = 1024;
+static int queue = firtp::defaults::queue;
 RTAPI_MP_INT(queue, "blocks the planner holds at once");
-static int max_blocks = 32;
+static int max_blocks = firtp::defaults::max_blocks;
 RTAPI_MP_INT(max_blocks, "stream blocks planned per period at most");
 static long block_key = firtp::stream::default_block_key;
 RTAPI_MP_LONG(block_key, "hal_stream key of the block stream (0: pins only)");
@@ -82,10 +82,10 @@ static char* max_feed_override = nullptr;
 RTAPI_MP_STRING(max_feed_override, "highest feed-scale, >= 1 ([DISPLAY]MAX_FEED_OVERRIDE); limits hold up to it (" FIRTP_DEFAULT_MAX_FEED_OVERRIDE_TEXT ")");
 static char* rate_reserve = nullptr;
 RTAPI_MP_STRING(rate_reserve, "fixed chain: share of acceleration and jerk limits kept for override and hold ramps (" FIRTP_DEFAULT_RATE_RESERVE_TEXT ")");
-static int stream_depth = 4096;
+static int stream_depth = firtp::defaults::stream_depth;
 RTAPI_MP_INT(stream_depth, "blocks the block stream holds, periods the axis-state stream holds");
 static char* brake_speed = nullptr;
-RTAPI_MP_STRING(brake_speed, "vel-fb speed, units/s, above which a start or enable brakes from the feedback (1)");
+RTAPI_MP_STRING(brake_speed, "vel-fb speed, units/s, above which a start or enable brakes from the feedback (" FIRTP_DEFAULT_BRAKE_SPEED_TEXT ")");
 
 namespace {
 

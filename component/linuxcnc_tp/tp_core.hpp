@@ -59,11 +59,11 @@ struct TpSettings {
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // what the tolerance bounds
     double chord_tolerance = defaults::arc_chord_tolerance;  // units: largest sagitta of an arc's chords
     double rate_reserve = defaults::rate_reserve;  // share of acceleration and jerk kept for override/hold ramps (0..1)
-    std::size_t moves = 1024;          // moves accepted and not finished, at most
+    std::size_t moves = defaults::queue;  // moves accepted and not finished, at most
     std::size_t full_margin = 16;      // full() this many moves before the ring is
-    std::size_t blocks = 4096;         // planned blocks not yet retired (the Planner), at most
-    int max_blocks_per_cycle = 64;     // planned per period at most
-    std::int64_t plan_budget_ns = 250000;  // and only while planning took less than this (0: no time limit)
+    std::size_t blocks = defaults::tp_blocks;  // planned blocks not yet retired (the Planner), at most
+    int max_blocks_per_cycle = defaults::tp_max_blocks;  // planned per period at most
+    std::int64_t plan_budget_ns = defaults::tp_plan_budget_us * 1000;  // and only while planning took less than this (0: no time limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
     double max_chords = 1.0e6;         // an arc needing more is refused
 };

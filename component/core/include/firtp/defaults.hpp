@@ -11,6 +11,14 @@
 #define FIRTP_DEFAULT_RATE_RESERVE_TEXT "0.2"
 #define FIRTP_DEFAULT_ARC_CHORD_TOLERANCE_TEXT "0.001"
 #define FIRTP_DEFAULT_MAX_FEED_OVERRIDE_TEXT "1"
+// The modules' load-time settings (loadrt firtp ..., firtp_tp's TPMOD line).
+#define FIRTP_DEFAULT_QUEUE_TEXT "1024"
+#define FIRTP_DEFAULT_MAX_BLOCKS_TEXT "32"
+#define FIRTP_DEFAULT_STREAM_DEPTH_TEXT "4096"
+#define FIRTP_DEFAULT_BRAKE_SPEED_TEXT "1"
+#define FIRTP_TP_DEFAULT_BLOCKS_TEXT "4096"
+#define FIRTP_TP_DEFAULT_MAX_BLOCKS_TEXT "64"
+#define FIRTP_TP_DEFAULT_PLAN_BUDGET_US_TEXT "250"
 
 namespace firtp {
 
@@ -48,6 +56,19 @@ inline constexpr double servo_period = servo_period_ns / 1e9;  // s
 // otherwise: 10x the 10^6-block programs the benchmarks plan. 120 bytes a block: 1.2 GB (1.8 GB
 // peak measured while the vector grew, at 112 bytes a block before Block::dwell).
 inline constexpr std::size_t max_program_blocks = 10'000'000;
+
+// firtp.so (and firtp run / serve, which load it): blocks the planner holds (queue=), stream blocks
+// planned per period at most (max_blocks=), periods the streams hold (stream_depth=), and the
+// feedback speed, units/s, above which a start or enable brakes from it (brake_speed=).
+inline constexpr int queue = static_cast<int>(decimal_value(FIRTP_DEFAULT_QUEUE_TEXT));
+inline constexpr int max_blocks = static_cast<int>(decimal_value(FIRTP_DEFAULT_MAX_BLOCKS_TEXT));
+inline constexpr int stream_depth = static_cast<int>(decimal_value(FIRTP_DEFAULT_STREAM_DEPTH_TEXT));
+inline constexpr double brake_speed = decimal_value(FIRTP_DEFAULT_BRAKE_SPEED_TEXT);
+// firtp_tp: moves accepted and not finished (queue=, as firtp.so's), planned blocks not yet
+// finished (blocks=), blocks planned per period (max_blocks=) within a planning time (plan_budget_us=).
+inline constexpr int tp_blocks = static_cast<int>(decimal_value(FIRTP_TP_DEFAULT_BLOCKS_TEXT));
+inline constexpr int tp_max_blocks = static_cast<int>(decimal_value(FIRTP_TP_DEFAULT_MAX_BLOCKS_TEXT));
+inline constexpr int tp_plan_budget_us = static_cast<int>(decimal_value(FIRTP_TP_DEFAULT_PLAN_BUDGET_US_TEXT));
 
 }  // namespace defaults
 }  // namespace firtp

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <firtp/bridge.hpp>
+#include <firtp/defaults.hpp>
 #include <firtp/machine.hpp>
 
 #include <filesystem>
@@ -15,10 +16,10 @@ std::filesystem::path default_module_path();
 
 // firtp.so settings beyond the machine's (loadrt firtp queue=... max_blocks=...).
 struct InProcessSettings {
-    int queue = 1024;      // blocks the component holds
-    int max_blocks = 32;   // stream blocks planned per servo period at most
+    int queue = defaults::queue;            // blocks the component holds
+    int max_blocks = defaults::max_blocks;  // stream blocks planned per servo period at most
     int plan_budget_us = 0;  // and only within this planning time (0: no limit, for stepped runs)
-    int stream_depth = 4096; // records the block stream holds: with queue, how far ahead a host may send
+    int stream_depth = defaults::stream_depth;  // records the block stream holds: with queue, how far ahead a host may send
 };
 
 class InProcessComponent {

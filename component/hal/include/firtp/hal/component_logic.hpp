@@ -15,6 +15,7 @@
 #pragma once
 
 #include <firtp/braking.hpp>
+#include <firtp/defaults.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/types.hpp>
@@ -36,11 +37,11 @@ enum class ComponentError : std::int32_t {
 struct ComponentSettings {
     PlannerParameters planner;           // planner.queue_capacity: blocks it holds at once
     int axes = 3;
-    int max_blocks_per_period = 32;      // stream records planned per period at most
+    int max_blocks_per_period = defaults::max_blocks;  // stream records planned per period at most
     std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
     double default_tolerance = defaults::tolerance;  // for pin blocks whose tolerance is 0
-    double brake_speed = 1.0;            // feedback speed (units/s, any axis) that counts as moving at a start
+    double brake_speed = defaults::brake_speed;  // feedback speed (units/s, any axis) that counts as moving at a start
 };
 
 struct ComponentInputs {
