@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace {
 
@@ -216,3 +217,20 @@ TEST(Gcode, EmptyProgram) {
 }
 
 }  // namespace
+
+// LinuxCNC 2.9's interpreter crashes (a null dereference in its Python plugin) on a (py...)
+// comment that is not UTF-8: found by fuzz.gcode. Refused with its place; UTF-8 Python comments
+// and other comments in any encoding still read.
+TEST(Gcode, PythonCommentsThatAreNotUtf8AreRefused) {
+    const MachineConfig m = firtp::default_machine();
+    try {
+        firtp::parse_gcode("G21\n( pyrun,x = '\xff\xfe')\nG1 X1 F600\nM2\n", "p.ngc", m);
+        FAIL() << "no error";
+    } catch (const firtp::GcodeError& e) {
+        EXPECT_EQ(e.line(), 2);
+        EXPECT_EQ(e.column(), 14);
+        EXPECT_NE(std::string(e.what()).find("must be UTF-8 text: byte 0xFF"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(firtp::parse_gcode("(PYRUN,x = 'H\xc3\xb6he')\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
+    EXPECT_EQ(firtp::parse_gcode("(H\xf6he in Latin-1)\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
+}

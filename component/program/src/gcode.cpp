@@ -2,6 +2,7 @@
 
 #include "canon_recorder.hpp"
 #include "interpreter_files.hpp"
+#include "python_comment.hpp"
 #include "rs274_canon.hpp"
 
 #include <firtp/text_cat.hpp>
@@ -152,6 +153,11 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
         if (read == INTERP_ENDFILE) break;
         if (read > INTERP_MIN_ERROR) {
             error = run.error(read);
+            break;
+        }
+        if (const auto problem = gcode::python_comment_problem(text_of(&InterpBase::line_text, interp))) {
+            const Place at = run.where();
+            error = GcodeError(at.file, at.line, problem->column, problem->what);
             break;
         }
         const int status = interp.execute();
