@@ -114,9 +114,9 @@ bool ComponentLogic::accept(const stream::BlockRecord& record, bool from_stream)
 }
 
 bool ComponentLogic::accept_event(const stream::BlockRecord& record) {
-    const Event event{static_cast<EventCode>(record.event_code), record.event_value, record.block.line,
+    const Event event{static_cast<EventKind>(record.event_code), record.event_value, record.block.line,
                       planner_.accepted()};
-    if (!std::isfinite(event.value) || (event.code == EventCode::dwell && !(event.value >= 0.0 && event.value <= max_dwell))) {
+    if (!std::isfinite(event.value) || (event.code == EventKind::dwell && !(event.value >= 0.0 && event.value <= max_dwell))) {
         fail(ComponentError::bad_value);
         return false;
     }
@@ -124,7 +124,7 @@ bool ComponentLogic::accept_event(const stream::BlockRecord& record) {
         fail(ComponentError::queue_full);
         return false;
     }
-    if (event.code == EventCode::program_end) planner_.finish();  // no block follows: the last one ends the motion
+    if (event.code == EventKind::program_end) planner_.finish();  // no block follows: the last one ends the motion
     if (record.seq != 0) ++next_seq_;
     return true;
 }

@@ -6,15 +6,15 @@ namespace firtp {
 
 namespace {
 
-bool waits(EventCode code) {
-    return code == EventCode::tool_change || code == EventCode::pause || code == EventCode::optional_pause;
+bool waits(EventKind code) {
+    return code == EventKind::tool_change || code == EventKind::pause || code == EventKind::optional_pause;
 }
 
 }  // namespace
 
 bool EventQueue::push(const Event& event) {
     if (count_ == capacity) return false;
-    if (event.code == EventCode::dwell) dwell_ += event.value;
+    if (event.code == EventKind::dwell) dwell_ += event.value;
     ring_[(head_ + count_) % capacity] = event;
     ++count_;
     if (waits(event.code)) ++gates_;
@@ -32,36 +32,36 @@ bool EventQueue::fire(const Event& e, const EventInputs& in, EventOutputs& out) 
     out.events = fired_;
     out.line = e.line;
     switch (e.code) {
-        case EventCode::spindle_clockwise:
-        case EventCode::spindle_counterclockwise: {
-            const bool forward = e.code == EventCode::spindle_clockwise;
+        case EventKind::spindle_clockwise:
+        case EventKind::spindle_counterclockwise: {
+            const bool forward = e.code == EventKind::spindle_clockwise;
             out.spindle_on = true;
             out.spindle_forward = forward;
             out.spindle_reverse = !forward;
             out.spindle_speed = forward ? std::abs(e.value) : -std::abs(e.value);
             return false;
         }
-        case EventCode::spindle_stop:
+        case EventKind::spindle_stop:
             out.spindle_on = out.spindle_forward = out.spindle_reverse = false;
             return false;
-        case EventCode::spindle_speed:  // S: the speed in force, signed as the spindle turns
+        case EventKind::spindle_speed:  // S: the speed in force, signed as the spindle turns
             out.spindle_speed = out.spindle_reverse ? -std::abs(e.value) : std::abs(e.value);
             return false;
-        case EventCode::tool_select: out.tool_prep_number = static_cast<std::int32_t>(e.value); return false;
-        case EventCode::tool_change:
+        case EventKind::tool_select: out.tool_prep_number = static_cast<std::int32_t>(e.value); return false;
+        case EventKind::tool_change:
             out.tool_prep_number = static_cast<std::int32_t>(e.value);
             out.tool_change = true;
             return true;
-        case EventCode::flood_on: out.coolant_flood = true; return false;
-        case EventCode::mist_on: out.coolant_mist = true; return false;
-        case EventCode::coolant_off: out.coolant_flood = out.coolant_mist = false; return false;
-        case EventCode::pause:
-        case EventCode::optional_pause:
-            if (e.code == EventCode::optional_pause && !in.optional_stop) return false;
+        case EventKind::flood_on: out.coolant_flood = true; return false;
+        case EventKind::mist_on: out.coolant_mist = true; return false;
+        case EventKind::coolant_off: out.coolant_flood = out.coolant_mist = false; return false;
+        case EventKind::pause:
+        case EventKind::optional_pause:
+            if (e.code == EventKind::optional_pause && !in.optional_stop) return false;
             out.paused = true;
             return true;
-        case EventCode::dwell: return false;  // the rest is in the timeline
-        case EventCode::program_end:
+        case EventKind::dwell: return false;  // the rest is in the timeline
+        case EventKind::program_end:
             out.program_end = true;
             out.spindle_on = out.spindle_forward = out.spindle_reverse = false;  // M2/M30 as LinuxCNC
             out.coolant_flood = out.coolant_mist = false;

@@ -66,7 +66,7 @@ struct Program {
         r.seq = ++seq;
         records.push_back(streamed(r));
     }
-    void event(EventCode code, double value, std::int64_t line) {
+    void event(EventKind code, double value, std::int64_t line) {
         stream::BlockRecord r;
         r.is_event = true;
         r.event_code = static_cast<std::int32_t>(code);
@@ -107,7 +107,7 @@ void expect_dwell_as_planned(const ComponentSettings& settings) {
     const Block third = move(0, 20, Termination::exact_stop, 4);
     Program program;
     program.block(first);
-    program.event(EventCode::dwell, 0.5, 2);
+    program.event(EventKind::dwell, 0.5, 2);
     program.block(second);
     program.block(third);
     Servo run(settings);
@@ -137,12 +137,12 @@ TEST(ComponentEvents, ADwellRestsAsThePlanAtTheLimits) { expect_dwell_as_planned
 TEST(ComponentEvents, EventsFireWhenMotionReachesThemInOrder) {
     const Block first = move(10, 0, Termination::exact_stop, 1);
     Program program;
-    program.event(EventCode::spindle_speed, 8000, 1);
-    program.event(EventCode::spindle_clockwise, 8000, 1);
+    program.event(EventKind::spindle_speed, 8000, 1);
+    program.event(EventKind::spindle_clockwise, 8000, 1);
     program.block(first);
-    program.event(EventCode::flood_on, 0, 2);
+    program.event(EventKind::flood_on, 0, 2);
     program.block(move(10, 10, Termination::blend, 3));
-    program.event(EventCode::program_end, 0, 4);
+    program.event(EventKind::program_end, 0, 4);
     Servo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(1);
@@ -171,8 +171,8 @@ TEST(ComponentEvents, AToolChangeWaitsAtRestForToolChanged) {
     const Block first = move(10, 0, Termination::exact_stop, 1);
     Program program;
     program.block(first);
-    program.event(EventCode::tool_select, 3, 2);
-    program.event(EventCode::tool_change, 3, 2);
+    program.event(EventKind::tool_select, 3, 2);
+    program.event(EventKind::tool_change, 3, 2);
     program.block(move(10, 10, Termination::exact_stop, 3));
     Servo run(limit_settings());
     run.stream.records = program.records;
@@ -200,9 +200,9 @@ TEST(ComponentEvents, AToolChangeWaitsAtRestForToolChanged) {
 TEST(ComponentEvents, APauseWaitsForResumeAndM1OnlyWithOptionalStop) {
     Program program;
     program.block(move(10, 0, Termination::exact_stop, 1));
-    program.event(EventCode::optional_pause, 0, 2);  // optional-stop off: goes on
+    program.event(EventKind::optional_pause, 0, 2);  // optional-stop off: goes on
     program.block(move(10, 10, Termination::exact_stop, 3));
-    program.event(EventCode::pause, 0, 4);
+    program.event(EventKind::pause, 0, 4);
     program.block(move(0, 10, Termination::exact_stop, 5));
     Servo run(paper_settings());
     run.stream.records = program.records;
@@ -219,7 +219,7 @@ TEST(ComponentEvents, APauseWaitsForResumeAndM1OnlyWithOptionalStop) {
 TEST(ComponentEvents, AGapOrARepeatAmongEventsIsCaught) {
     Program program;
     program.block(move(10, 0, Termination::exact_stop, 1));
-    program.event(EventCode::flood_on, 0, 2);
+    program.event(EventKind::flood_on, 0, 2);
     stream::BlockRecord repeat = program.records.back();
     program.records.push_back(repeat);  // the same event again: never twice
     Servo run(paper_settings());
@@ -231,7 +231,7 @@ TEST(ComponentEvents, AGapOrARepeatAmongEventsIsCaught) {
     Program gap;
     gap.block(move(10, 0, Termination::exact_stop, 1));
     ++gap.seq;  // seq 2 lost
-    gap.event(EventCode::flood_on, 0, 2);
+    gap.event(EventKind::flood_on, 0, 2);
     Servo lost(paper_settings());
     lost.stream.records = gap.records;
     lost.ticks(2000);
@@ -243,7 +243,7 @@ TEST(ComponentEvents, AGapOrARepeatAmongEventsIsCaught) {
 TEST(ComponentEvents, AnUnknownEventCodeStopsTheProgram) {
     Program program;
     program.block(move(10, 0, Termination::exact_stop, 1));
-    program.event(static_cast<EventCode>(event_codes), 0, 2);
+    program.event(static_cast<EventKind>(event_kinds), 0, 2);
     Servo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(2000);

@@ -34,13 +34,6 @@ const char* const pairs[] = {
     "firtp-bridge.current-line", "firtp.current-line",   "firtp-bridge.events",      "firtp.events",
     nullptr,                   nullptr};
 
-// The component's event codes are event_t's.
-static_assert(static_cast<int>(EventCode::spindle_clockwise) == firtp_lcm::event_t::SPINDLE_CLOCKWISE);
-static_assert(static_cast<int>(EventCode::tool_change) == firtp_lcm::event_t::TOOL_CHANGE);
-static_assert(static_cast<int>(EventCode::pause) == firtp_lcm::event_t::PAUSE);
-static_assert(static_cast<int>(EventCode::dwell) == firtp_lcm::event_t::DWELL);
-static_assert(static_cast<int>(EventCode::program_end) == firtp_lcm::event_t::PROGRAM_END);
-static_assert(event_codes == firtp_lcm::event_t::PROGRAM_END + 1);
 
 }  // namespace
 

@@ -21,13 +21,6 @@ constexpr int max_messages_per_step = 10000;  // step() never spins forever on a
 // started is a one-off and does not last this long.
 constexpr auto lost_program_after = std::chrono::seconds(1);
 
-// event_t's kinds are firtp::EventKind's values.
-static_assert(static_cast<int>(EventKind::spindle_clockwise) == firtp_lcm::event_t::SPINDLE_CLOCKWISE);
-static_assert(static_cast<int>(EventKind::tool_change) == firtp_lcm::event_t::TOOL_CHANGE);
-static_assert(static_cast<int>(EventKind::pause) == firtp_lcm::event_t::PAUSE);
-static_assert(static_cast<int>(EventKind::dwell) == firtp_lcm::event_t::DWELL);
-static_assert(static_cast<int>(EventKind::program_end) == firtp_lcm::event_t::PROGRAM_END);
-static_assert(event_kinds == firtp_lcm::event_t::PROGRAM_END + 1);
 
 // One message to send: a block or an event (seq i at index i - 1, in program order).
 struct Outgoing {

@@ -1,9 +1,19 @@
 // event_t: program events between blocks, in the blocks' sequence.
+#include <firtp/event_kind.hpp>
 #include <firtp/messages.hpp>
 
 #include <cmath>
 
 namespace firtp::messages {
+
+// event_t's kinds are firtp::EventKind's values (the program library, the host and firtp.so use those).
+static_assert(static_cast<int>(EventKind::spindle_clockwise) == firtp_lcm::event_t::SPINDLE_CLOCKWISE);
+static_assert(static_cast<int>(EventKind::spindle_speed) == firtp_lcm::event_t::SPINDLE_SPEED);
+static_assert(static_cast<int>(EventKind::tool_change) == firtp_lcm::event_t::TOOL_CHANGE);
+static_assert(static_cast<int>(EventKind::pause) == firtp_lcm::event_t::PAUSE);
+static_assert(static_cast<int>(EventKind::dwell) == firtp_lcm::event_t::DWELL);
+static_assert(static_cast<int>(EventKind::program_end) == firtp_lcm::event_t::PROGRAM_END);
+static_assert(event_kinds == firtp_lcm::event_t::PROGRAM_END + 1);
 
 firtp_lcm::event_t event_message(std::int8_t kind, double value, std::int64_t line, std::int64_t program,
                                  std::int64_t seq, std::int64_t utime) {

@@ -2,29 +2,14 @@
 // interpreter reports them through its canonical-machining calls, in program order between blocks.
 #pragma once
 
+#include <firtp/event_kind.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace firtp {
-
-enum class EventKind : std::uint8_t {
-    spindle_clockwise,         // M3          value: spindle speed (rpm) in force
-    spindle_counterclockwise,  // M4          value: spindle speed (rpm)
-    spindle_stop,              // M5
-    spindle_speed,             // S           value: rpm
-    tool_select,               // T           value: tool number
-    tool_change,               // M6          value: tool number now in the spindle
-    flood_on,                  // M8
-    mist_on,                   // M7
-    coolant_off,               // M9 (flood and mist off)
-    pause,                     // M0, M60
-    optional_pause,            // M1
-    dwell,                     // G4          value: seconds
-    program_end,               // M2, M30
-};
-constexpr int event_kinds = 13;
 
 std::string_view event_name(EventKind kind);  // "spindle_clockwise", ... (JSON, summary)
 

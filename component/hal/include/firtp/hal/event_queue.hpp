@@ -9,19 +9,14 @@
 // length in the planner's timeline (Block::dwell of the next block), not a wait here.
 #pragma once
 
+#include <firtp/event_kind.hpp>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
 namespace firtp {
 
-// Values as in firtp_lcm::event_t and firtp::EventKind (program_event.hpp).
-enum class EventCode : std::int32_t {
-    spindle_clockwise = 0, spindle_counterclockwise = 1, spindle_stop = 2, spindle_speed = 3, tool_select = 4,
-    tool_change = 5, flood_on = 6, mist_on = 7, coolant_off = 8, pause = 9, optional_pause = 10, dwell = 11,
-    program_end = 12
-};
-constexpr std::int32_t event_codes = 13;
 
 struct EventInputs {
     bool tool_changed = false;
@@ -43,7 +38,7 @@ struct EventOutputs {
 };
 
 struct Event {
-    EventCode code = EventCode::program_end;
+    EventKind code = EventKind::program_end;
     double value = 0.0;          // rpm, tool number or seconds
     std::int64_t line = 0;
     std::uint64_t after_blocks = 0;  // fires once this many blocks have finished

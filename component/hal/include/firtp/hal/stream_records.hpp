@@ -29,7 +29,7 @@ struct BlockRecord {
     std::uint64_t seq = 0;       // 0 on the pins: not checked
     bool type_known = true;      // motion type and termination were valid codes (an event: its code)
     bool is_event = false;       // a program event between blocks, not a block
-    std::int32_t event_code = 0; // firtp::EventCode
+    std::int32_t event_code = 0; // firtp::EventKind
     double event_value = 0.0;
 };
 
@@ -59,7 +59,7 @@ inline void unpack(const hal_stream_data* in, BlockRecord& r) {
     r.is_event = in[18].s == 1;
     r.event_code = type;
     r.event_value = in[9].f;
-    r.type_known = r.is_event ? type >= 0 && type < event_codes : (type == 1 || type == 2) && (termination == 0 || termination == 1);
+    r.type_known = r.is_event ? type >= 0 && type < event_kinds : (type == 1 || type == 2) && (termination == 0 || termination == 1);
     r.block.type = type == 1 ? MotionType::traverse : MotionType::feed;
     r.block.termination = termination == 1 ? Termination::blend : Termination::exact_stop;
 }
