@@ -219,8 +219,9 @@ TEST(Gcode, EmptyProgram) {
 }  // namespace
 
 // LinuxCNC 2.9's interpreter crashes (a null dereference in its Python plugin) on a (py...)
-// comment that is not UTF-8: found by fuzz.gcode. Refused with its place; UTF-8 Python comments
-// and other comments in any encoding still read.
+// comment that is not UTF-8: found by fuzz.gcode. Refused with its place; other comments in any
+// encoding still read. (What LinuxCNC's plugin then does with a UTF-8 one is its own: under
+// AddressSanitizer even (pyrun,x = 'Höhe') fails inside it.)
 TEST(Gcode, PythonCommentsThatAreNotUtf8AreRefused) {
     const MachineConfig m = firtp::default_machine();
     try {
@@ -231,6 +232,5 @@ TEST(Gcode, PythonCommentsThatAreNotUtf8AreRefused) {
         EXPECT_EQ(e.column(), 14);
         EXPECT_NE(std::string(e.what()).find("must be UTF-8 text: byte 0xFF"), std::string::npos) << e.what();
     }
-    EXPECT_EQ(firtp::parse_gcode("(PYRUN,x = 'H\xc3\xb6he')\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
     EXPECT_EQ(firtp::parse_gcode("(H\xf6he in Latin-1)\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
 }
