@@ -34,15 +34,13 @@ bool finite(const Pose& p) {
     return std::all_of(p.begin(), p.end(), [](double v) { return std::isfinite(v); });
 }
 
-AxisVector to_vector(const Pose& p) {
-    AxisVector v;
-    for (int i = 0; i < pose_axes; ++i) v[i] = p[static_cast<std::size_t>(i)];
-    return v;
-}
+static_assert(pose_axes == max_axes, "a pose is one AxisVector");
+
+AxisVector to_vector(const Pose& p) { return Eigen::Map<const AxisVector>(p.data()); }
 
 Pose to_pose(const AxisVector& v) {
     Pose p;
-    for (int i = 0; i < pose_axes; ++i) p[static_cast<std::size_t>(i)] = v[i];
+    Eigen::Map<AxisVector>(p.data()) = v;
     return p;
 }
 
@@ -204,8 +202,9 @@ struct TpCore::Impl {
         if (p.fixed_chain) {
             const std::array<double, max_stages> times = limit_filter_times(p.limits, s.filter_times);
             p.filters.stages = s.stages;
-            for (int i = 0; i < std::clamp(s.stages, 0, max_stages); ++i) p.filters.T[static_cast<std::size_t>(i)] = times[static_cast<std::size_t>(i)];
-            std::sort(p.filters.T.begin(), p.filters.T.begin() + std::clamp(s.stages, 0, max_stages), std::greater<>());
+            const int n = std::clamp(s.stages, 0, max_stages);
+            std::copy_n(times.begin(), n, p.filters.T.begin());
+            std::sort(p.filters.T.begin(), p.filters.T.begin() + n, std::greater<>());
         }
         wanted = p;
         // validate_window: a longer window would make the rebuild allocate accordingly (gigabytes
@@ -275,10 +274,8 @@ struct TpCore::Impl {
         if (m.arc && !last) {
             const double fraction = static_cast<double>(k + 1) / m.chords;
             const Vec3 p = m.circle.point(fraction);
-            for (int i = 0; i < pose_axes; ++i) {
-                const std::size_t a = static_cast<std::size_t>(i);
-                b.target[i] = i < 3 ? p[a] : m.start[a] + (m.end[a] - m.start[a]) * fraction;
-            }
+            b.target = to_vector(m.start) + (to_vector(m.end) - to_vector(m.start)) * fraction;
+            b.target.head<3>() = Eigen::Map<const Eigen::Vector3d>(p.data());  // on the arc
         } else {
             b.target = to_vector(m.end);
         }

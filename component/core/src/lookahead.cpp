@@ -549,11 +549,15 @@ void Lookahead::set_rate(double rate) {
     const bool resumed = held_ && !hold;
     held_ = hold;
     retry_ = false;
-    if (resumed && count_ > 0) {
+    if (count_ > 0) replan_from_front(resumed);
+}
+
+void Lookahead::replan_from_front(bool resuming) {
+    if (resuming) {  // the hold's stop goes; the plan it replaces is kept should the new one fail
         take_snapshot();
         unsplit();
     }
-    if (count_ > 0) replan(0);
+    replan(0);
 }
 
 }  // namespace firtp
@@ -573,12 +577,12 @@ void Lookahead::erase(std::size_t i) {
     --count_;
 }
 
-bool Lookahead::hold_stop_placed() const {
-    for (std::size_t i = 0; i < count_; ++i) {
-        if (seg(i).hold_split) return true;
-        if (exit_is_stop(i)) return seg(i).brake;  // an exact stop the hold brakes into
-    }
-    return false;
+std::size_t Lookahead::hold_stop_index() const {
+    // A hold's split and a block braking to rest are stops too (classify), so the first stop ahead
+    // is the hold's if the hold brakes into it.
+    for (std::size_t i = 0; i < count_; ++i)
+        if (exit_is_stop(i)) return seg(i).brake ? i : count_;
+    return count_;
 }
 
 void Lookahead::place_hold_stop() {

@@ -23,9 +23,12 @@ constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
 
 double Lookahead::start_after_stop(std::size_t i, double stop, const Step& stop_step, double half) const {
     // A sample lands on the corner while the tool rests (and the dwell runs on the tick grid).
+    return on_tick_grid(stop + 0.5 * stop_step.kernel.width() + seg(i).dwell) + half;
+}
+
+double Lookahead::on_tick_grid(double t) const {
     const double period = parameters_.period;
-    const double settled = stop + 0.5 * stop_step.kernel.width() + seg(i).dwell;
-    return std::ceil(settled / period - 1e-9) * period + half;
+    return std::ceil(t / period - 1e-9) * period;
 }
 
 double Lookahead::frozen_centre() const {
@@ -49,7 +52,7 @@ Lookahead::NextStep Lookahead::next_step() const {
             n.centre = std::max(n.centre, start_after_stop(0, stop, frozen_.step, half));
         } else if (s.dwell > 0.0) {  // from rest: the dwell runs from when the block came
             const double since = s.added - static_cast<double>(timeline_->now()) * period;
-            n.centre = std::max(n.centre, std::ceil((since + s.dwell) / period - 1e-9) * period + half);
+            n.centre = std::max(n.centre, on_tick_grid(since + s.dwell) + half);
         }
         return n;
     }
@@ -203,11 +206,7 @@ void Lookahead::commit() {
     const double period = parameters_.period;
     if (retry_ && count_ > 0) {  // a hold's stop or a resume that failed its check: again from here
         retry_ = false;
-        if (!held_) {
-            take_snapshot();
-            unsplit();
-        }
-        replan(0);
+        replan_from_front(!held_);
     }
     for (;;) {
         if (count_ == 0) return;
@@ -306,13 +305,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     }
     // Held: what follows the hold's stop starts only after a resume, which plans and checks it
     // again; the check ends at the stop.
-    std::size_t last = count_;
-    if (held_)
-        for (std::size_t i = 0; i < count_; ++i)
-            if (seg(i).hold_split || seg(i).hold_end || (exit_is_stop(i) && seg(i).brake)) {
-                last = i + 1;
-                break;
-            }
+    const std::size_t last = held_ && hold_stop_placed() ? hold_stop_index() + 1 : count_;
     if (first >= last) return true;
     // A block its legs do not cover: lower the corner it is entered from.
     for (std::size_t i = first; i < last; ++i) {

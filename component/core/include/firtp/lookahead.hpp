@@ -204,6 +204,7 @@ private:
     // after the stop step centred at `stop` (s from now): the kernel starts on the first sample at
     // which the stop has settled and segment i's dwell has passed.
     double start_after_stop(std::size_t i, double stop, const Step& stop_step, double half) const;
+    double on_tick_grid(double t) const;  // the first sample at or after t (s from now)
     NextStep next_step() const;
     bool final_for_start() const;
     void freeze(const NextStep& next);
@@ -213,7 +214,9 @@ private:
     bool check(std::size_t first, std::size_t* bad);
     // Hold: brake from the motion under way and split the block where the earliest stop falls.
     void place_hold_stop();
-    bool hold_stop_placed() const;
+    std::size_t hold_stop_index() const;  // the segment the hold's stop ends; count_ if none
+    bool hold_stop_placed() const { return hold_stop_index() < count_; }
+    void replan_from_front(bool resuming);  // after a change of rate (undoing the hold's stop)
     void unsplit();  // resume before the hold's stop began: the split block is whole again
     void take_snapshot();
     void insert_after(std::size_t i, const Segment& s);
