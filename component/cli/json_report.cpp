@@ -27,7 +27,7 @@ json machine_json(const PlanRun& run) {
         machine["T_s"] = times;
         machine["delay_s"] = f.delay();
     } else {
-        machine["jerk_time_s"] = jerk_time(run.parameters.limits);
+        machine["jerk_time_s"] = jerk_time(smoothing_limits(run.parameters.limits));
     }
     return machine;
 }

@@ -22,7 +22,7 @@ std::string machine_text(const PlanRun& run) {
         for (int i = 0; i < p.filters.stages; ++i) times += cat(i ? ", " : "", ms(p.filters.T[i]));
         smoothing = cat(std::to_string(p.filters.stages), " FIR stages, T = ", times, " ms (Td ", ms(p.filters.delay()), " ms)");
     } else {
-        smoothing = cat("smoothing at the axis limits (jerk time T2 = ", ms(jerk_time(p.limits)), " ms)");
+        smoothing = cat("smoothing at the axis limits (jerk time T2 = ", ms(jerk_time(smoothing_limits(p.limits))), " ms)");
     }
     return cat(smoothing, ", period ", ms(p.period), " ms, tolerance bounds the ",
                p.tolerance_meaning == ToleranceMeaning::contour ? "contour" : "corner point");

@@ -4,7 +4,9 @@
 // of the samples is compared. Issue 13 asks for none slower; this measures how far from that the
 // planner is (docs/BENCHMARKS.md):
 //
-//     firtp_cliffs [--programs N] [--seed S]
+//     firtp_cliffs [--programs N] [--seed S] [--list]
+//
+// --list prints each slower case: program index, what was raised, blocks, both cycle times.
 #include "support/random_machine.hpp"
 
 #include <firtp/trajectory.hpp>
@@ -20,11 +22,13 @@ using namespace firtp;
 int main(int argc, char** argv) {
     int programs = 150;
     std::uint64_t seed = 31;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (std::strcmp(argv[i], "--programs") == 0) programs = std::atoi(argv[i + 1]);
-        else if (std::strcmp(argv[i], "--seed") == 0) seed = std::strtoull(argv[i + 1], nullptr, 10);
+    bool list = false;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--list") == 0) list = true;
+        else if (i + 1 < argc && std::strcmp(argv[i], "--programs") == 0) programs = std::atoi(argv[++i]);
+        else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) seed = std::strtoull(argv[++i], nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S]\n");
+            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list]\n");
             return 2;
         }
     }
@@ -52,6 +56,9 @@ int main(int argc, char** argv) {
             const double raised = cycle(p, blocks);
             ++tried[static_cast<std::size_t>(variant)];
             if (raised > base + 1e-12) {
+                if (list)
+                    std::printf("program %d: %s raised: %zu blocks, %.6f s -> %.6f s (%+.1f %%)\n", k, names[variant],
+                                blocks.size(), base, raised, 100.0 * (raised / base - 1.0));
                 ++slower[static_cast<std::size_t>(variant)];
                 worst[static_cast<std::size_t>(variant)] = std::max(worst[static_cast<std::size_t>(variant)], raised / base - 1.0);
             }

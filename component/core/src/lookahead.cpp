@@ -69,7 +69,7 @@ const char* describe(CornerBound bound) {
 }
 
 Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, const AxisVector& start)
-    : parameters_(parameters), limits_(parameters.limits), timeline_(&timeline),
+    : parameters_(parameters), limits_(smoothing_limits(parameters.limits)), machine_(parameters.limits), timeline_(&timeline),
       max_rate_(std::max(parameters.max_rate, 1.0)), capacity_(std::max<std::size_t>(parameters.queue_capacity, 2)),
       segments_(capacity_ + 1),  // one spare: a hold splits a block even when the window is full
       goal_(start), sweep_(3 * segments_.size() + 64), saved_(segments_.size()), snapshot_(segments_.size()) {

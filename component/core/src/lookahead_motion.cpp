@@ -333,7 +333,7 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
     const double begin = std::max(enter_[first] - max_width_, 0.0);
-    LimitCheck limits = sweep_.check(legs_, begin, end, limits_, parameters_.period);
+    LimitCheck limits = sweep_.check(legs_, begin, end, machine_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
     for (std::size_t k = 0; k < legs && limits.ok; ++k)

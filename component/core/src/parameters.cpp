@@ -106,9 +106,27 @@ double jerk_time(const MachineLimits& limits) {
     return worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
 }
 
+MachineLimits smoothing_limits(const MachineLimits& limits) {
+    double t2 = 0.0;
+    for (int a = 0; a < limits.axes; ++a) {
+        const AxisLimits& l = limits.axis[a];
+        if (!(l.max_acceleration > 0.0 && l.max_jerk > 0.0)) continue;
+        double t = l.max_acceleration / l.max_jerk;
+        if (l.max_velocity > 0.0) t = std::min(t, std::sqrt(2.0 * l.max_velocity / l.max_jerk));
+        t2 = std::max(t2, t);
+    }
+    MachineLimits planned = limits;
+    for (int a = 0; a < limits.axes; ++a) {
+        AxisLimits& l = planned.axis[a];
+        if (l.max_jerk > 0.0) l.max_acceleration = std::min(l.max_acceleration, l.max_jerk * t2);
+    }
+    return planned;
+}
+
 double hold_time_bound(const PlannerParameters& parameters) {
-    const double ramp = worst_ratio(parameters.limits, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
-    return 2.0 * (ramp + 2.0 * jerk_time(parameters.limits));
+    const MachineLimits planned = smoothing_limits(parameters.limits);
+    const double ramp = worst_ratio(planned, &AxisLimits::max_velocity, &AxisLimits::max_acceleration);
+    return 2.0 * (ramp + 2.0 * jerk_time(planned));
 }
 
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance) {

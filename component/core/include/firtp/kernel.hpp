@@ -48,7 +48,7 @@ Kernel two_stage(double t1, double t2);
 // T1 of a step dV: max over the axes of |dV_a| / A_a (0 for axes without an acceleration limit).
 double acceleration_time(const MachineLimits& limits, const AxisVector& dv);
 
-// The kernel of a step dV at the machine's limits: two_stage(acceleration_time, jerk_time).
+// The kernel of a step dV at `limits` (smoothing_limits: parameters.hpp): two_stage(acceleration_time, jerk_time).
 Kernel step_kernel(const MachineLimits& limits, const AxisVector& dv);
 
 }  // namespace firtp

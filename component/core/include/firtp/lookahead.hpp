@@ -228,7 +228,8 @@ private:
     bool moving() const { return frozen_.moving || !timeline_->idle(); }
 
     PlannerParameters parameters_;
-    MachineLimits limits_;
+    MachineLimits limits_;   // what it plans with: smoothing_limits (parameters.hpp)
+    MachineLimits machine_;  // what the check measures against: the machine's own
     SpacingRules rules_;
     Regime sparse_;
     Timeline* timeline_;

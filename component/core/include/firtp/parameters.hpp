@@ -74,14 +74,22 @@ MachineLimits planned_limits(const PlannerParameters& parameters);
 // a tolerance. Smoothing at the limits needs no cap: it checks every chord's corner.
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance);
 
-// The jerk time every step shares when smoothing at the limits (kernel.hpp), and T2's default for
-// the paper's chain: max over the axes of A_a / J_a; 0 when no axis limits jerk.
+// T2's default for the paper's chain (Eq. 4: j = a / T2): max over the axes of A_a / J_a; 0 when
+// no axis limits jerk. Smoothing at the limits: jerk_time(smoothing_limits(limits)).
 double jerk_time(const MachineLimits& limits);
 
+// The limits smoothing at the limits plans with: every step shares one jerk time
+// T2 = max_a min(A_a / J_a, sqrt(2 V_a / J_a)), and the acceleration of axis a is capped at
+// min(A_a, J_a T2). A step of dV on an axis reaches at most sqrt(J_a dV) (dV <= 2 V_a, a reversal),
+// and for every such step this T2 gives a kernel no wider than T2 = A_a / J_a does: planned at a
+// higher A_a, T2 would grow for every step, and more acceleration would make the machine slower
+// (tests/bench/cliffs.cpp). Lower accelerations only, so every guarantee against `limits` holds.
+MachineLimits smoothing_limits(const MachineLimits& limits);
+
 // Smoothing at the limits: a hold or an abort brings the axes to rest within this time (s). The
-// step under way ends (at most one full-speed step, V_a / A_a + T2 on its most loaded axis, T2 =
-// max A_a / J_a), then one more step from the highest speed to rest; a dense run (runs of short
-// blocks) may use twice the jerk time. Measured by tests/core/limits_override_test.cpp.
+// step under way ends (at most one full-speed step, V_a / A_a + T2 on its most loaded axis, with
+// smoothing_limits' A_a and T2), then one more step from the highest speed to rest; a dense run
+// (runs of short blocks) may use twice the jerk time. Measured by tests/core/limits_override_test.cpp.
 double hold_time_bound(const PlannerParameters& parameters);
 
 // Checks max_rate >= 1 and 0 < rate_reserve < 1, finite; returns an empty string or the reason.
