@@ -86,14 +86,17 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
         }
     ProfileLegs legs;
     legs.a = a, legs.p = p, legs.b = b;
+    // The rest of the length goes to the fastest leg (a rounding shortfall too, so that the legs
+    // cover the block exactly); not to an entry above the cruise and the exit, which is the block
+    // entered faster than its own feed and is left at once.
+    const double cruise = std::max(p, b);
+    auto rank = [&](int i) { return speed[i] <= cruise ? speed[i] : -speed[i]; };
     double used = 0.0;
     int fastest = 0;
     for (int i = 0; i < n; ++i) {
         used += speed[i] * x[i];
-        if (speed[i] > speed[fastest]) fastest = i;
+        if (rank(i) > rank(fastest)) fastest = i;
     }
-    // The rest of the length goes to the fastest leg (a rounding shortfall too, so that the legs
-    // cover the block exactly).
     const double extra = block.length - used;
     legs.fits = extra >= -1e-12 * block.length;
     if (legs.fits && extra != 0.0) {
