@@ -429,7 +429,9 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
     const double length = seg_length(i);
     const double pt = s.brake ? 0.0 : target(i);
     if (s.dense) {
+        // One speed: from rest, no more than the next block's feed across a corner after it.
         double v = entry >= 0.0 ? entry : std::min(s.entry_max, pt);
+        if (entry < 0.0 && s.kind == Kind::corner && !seg(i + 1).brake) v = std::min(v, target(i + 1));
         if (!(v > 0.0)) v = 0.0;
         s.a = s.p = s.b = v;
         s.unfit = !(v > 0.0);
