@@ -3,7 +3,6 @@
 #include <firtp/text_cat.hpp>
 
 #include <algorithm>
-#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -86,9 +85,13 @@ FeedSchedule feed_schedule(const LoggedRun& run) {
             through = s.control_seq;
         }
         // Blocks in their sequence, controls in theirs, the two interleaved as logged (as the bridge
-        // most likely received them: an abort taken before a block would refuse it).
-        std::merge(blocks.begin(), blocks.end(), controls.begin(), controls.end(), std::back_inserter(schedule.before[state]),
-                   [](const LoggedEvent* a, const LoggedEvent* b) { return a->eventnum < b->eventnum; });
+        // most likely received them: an abort taken before a block would refuse it). Each list keeps
+        // its own order even where its log order differs (a resend logged after a later seq).
+        std::vector<const LoggedEvent*>& inputs = schedule.before[state];
+        for (std::size_t b = 0, c = 0; b < blocks.size() || c < controls.size();)
+            inputs.push_back(c == controls.size() || (b < blocks.size() && blocks[b]->eventnum < controls[c]->eventnum)
+                                 ? blocks[b++]
+                                 : controls[c++]);
         schedule.placed_by_state += blocks.size();
         schedule.controls_placed_by_state += controls.size();
         ++state;

@@ -166,8 +166,11 @@ TEST(ReplayFeed, ControlsAndBlocksOfOnePeriodInterleaveAsLogged) {
     Log log;
     log.control(2, 1), log.block(3, 1), log.control(2, 2), log.block(3, 2);
     log.state(3, 3, 2, 2);
+    log.block(3, 4), log.block(3, 3), log.control(2, 3);  // block 4's first copy before 3's (refused, resent)
+    log.state(3, 5, 2, 3);
     const FeedSchedule s = feed_schedule(log.run);
     EXPECT_EQ(names(s.before[0]), (Names{"c2.1", "b3.1", "c2.2", "b3.2"}));
+    EXPECT_EQ(names(s.before[1]), (Names{"b3.3", "b3.4", "c2.3"}));  // each sequence in its order
 }
 
 // A new host (session) counts from 1; a late message of the old session that no state names stays
