@@ -284,6 +284,7 @@ int make_pins() {
 #undef FIRTP_PIN
     if (r == 0) {
         *pins->feed_scale = 1.0;
+        *pins->control_gen = 0;  // unconnected: the levels are taken every period
         *pins->block_motion_type = 2;
         *pins->next_seq = 1;
     }
