@@ -4,7 +4,9 @@
 # while an operator's commands arrive on its stdin at wall-clock times, so each control reaches the
 # component in whatever servo period it happens to, as on a machine: the feed override down to 0.6
 # mid-program, a hold on the path, a resume, the feed override back to 1. `firtp record` writes the
-# log; it must hold every message (nothing lost) and replay equal bit for bit.
+# log; it must hold every message (nothing lost) and replay equal bit for bit. The test
+# replay.record_serve_host_controls records a new one in every run (the controls land in other
+# periods each time).
 #   record_controls.sh FIRTP_BIN OUT.lcmlog        (from the repository's root; needs unshare -n)
 set -euo pipefail
 firtp=$(realpath "$1") out=$2
@@ -30,4 +32,8 @@ wait "$record" || { cat "$work/record.log"; exit 1; }
 cat "$work/host.log" "$work/record.log"
 INNER
 cp "$work/controls.lcmlog" "$out"
-"$firtp" replay "$out"
+# Equal bit for bit, every control placed by the states (the host republishes every 100 ms: more
+# than the operator's four).
+"$firtp" replay "$out" | tee "$work/replay.txt"
+grep -Eq "^fed +[0-9]+ blocks and ([5-9]|[1-9][0-9]+) controls in the periods" "$work/replay.txt" ||
+  { echo "the axis states did not place the controls"; exit 1; }
