@@ -66,9 +66,9 @@ std::string replay_help() {
     text << "Usage: firtp replay LOG.lcmlog [options]\n\n"
             "Runs the component again on a log recorded by `firtp record` (or `firtp run --lcm-log`): builds it\n"
             "from the log's FIRTP_CONFIG (machine and settings), steps it one servo period at a time, feeds it\n"
-            "each logged FIRTP_BLOCK in the period the recorded component took it (each FIRTP_AXIS_STATE says so)\n"
-            "and each FIRTP_CONTROL before the period of the next logged axis state, and compares its axis states\n"
-            "with the logged ones, one to one, printing where they first differ.\n\n"
+            "each logged FIRTP_BLOCK and FIRTP_CONTROL in the period the recorded component took it (each\n"
+            "FIRTP_AXIS_STATE says so; inputs never taken go in where they were logged), and compares its axis\n"
+            "states with the logged ones, one to one, printing where they first differ.\n\n"
          << replay_flags()
          << "\nExit status: 0 equal; 1 bad input (unreadable or incomplete log, no machine); 2 bad command line;\n"
             "4 the replayed axis states differ from the recorded ones.\n";
@@ -186,7 +186,8 @@ int replay_command(std::span<const std::string> args) {
               << "machine      " << component.description << "\n"
               << "log          " << run.blocks << " blocks, " << run.program_events << " program events, " << run.controls << " controls, " << run.states.size()
               << " axis states\n"
-              << "fed          " << schedule.placed_by_state << " blocks in the periods the axis states name\n"
+              << "fed          " << schedule.placed_by_state << " blocks and " << schedule.controls_placed_by_state
+              << " controls in the periods the axis states name\n"
               << "replayed     " << collector.states.size() << " axis states in " << periods << " servo periods\n"
               << "compared     " << c.compared << " states, largest difference " << number_text(c.largest)
               << " (tolerance " << (options.tolerance > 0.0 ? number_text(options.tolerance) + " relative" : "0, bit for bit")

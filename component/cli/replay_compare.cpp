@@ -29,7 +29,8 @@ public:
     bool state(const firtp_lcm::axis_state_t& r, const firtp_lcm::axis_state_t& p, std::size_t i) {
         if (!values("position", r.position, p.position, i) || !values("velocity", r.velocity, p.velocity, i) ||
             !values("acceleration", r.acceleration, p.acceleration, i) || !whole("line", r.line, p.line, i) ||
-            !whole("next_seq", r.next_seq, p.next_seq, i))
+            !whole("next_seq", r.next_seq, p.next_seq, i) || !whole("control_session", r.control_session, p.control_session, i) ||
+            !whole("control_seq", r.control_seq, p.control_seq, i))
             return false;
         ++result.compared;
         return true;

@@ -14,7 +14,8 @@ namespace firtp::cli {
 struct StateDifference {
     std::size_t recorded = 0;  // index into the recorded states (the replayed one: `replayed`)
     std::size_t replayed = 0;
-    std::string what;          // "position", "velocity", "acceleration", "line", "next_seq", "missing"
+    std::string what;          // "position", "velocity", "acceleration", "line", "next_seq", "control_session",
+                               // "control_seq", "missing"
     int axis = -1;             // for the per-axis quantities
     double recorded_value = 0.0, replayed_value = 0.0;
 };
@@ -26,7 +27,8 @@ struct Comparison {
 };
 
 // Two values are equal when |replayed - recorded| <= tolerance * max(1, |recorded|) (0: bit for
-// bit). `axes` of the 9 are compared, and the line and next_seq; "missing": the replay has fewer states.
+// bit). `axes` of the 9 are compared, and the line, next_seq and the control applied; "missing": the replay
+// has fewer states.
 Comparison compare_states(const std::vector<firtp_lcm::axis_state_t>& recorded,
                           const std::vector<firtp_lcm::axis_state_t>& replayed, int axes, double tolerance);
 

@@ -9,6 +9,21 @@
 namespace firtp::cli {
 namespace {
 
+// axis_state_t's fingerprint before control_session and control_seq (program and next_seq were there).
+constexpr std::uint64_t axis_state_before_controls = 0xc4dee41eef8eeb16;
+
+// An axis state of that type: refused by name, not only as another fingerprint.
+void refuse_old_axis_state(const std::filesystem::path& log, const lcm::LogEvent& event) {
+    const auto* bytes = static_cast<const std::uint8_t*>(event.data);
+    std::uint64_t fingerprint = 0;
+    for (int i = 0; i < 8 && i < event.datalen; ++i) fingerprint = fingerprint << 8 | bytes[i];
+    if (event.datalen < 8 || fingerprint != axis_state_before_controls) return;
+    throw std::runtime_error(cat(log.string(), ": event ", std::to_string(event.eventnum), " on ", event.channel,
+                                 ": an axis_state_t without control_session and control_seq (recorded by a firtp ",
+                                 "before they were added): this replay feeds each operator control in the period ",
+                                 "those fields name and cannot place the log's controls; record the run again"));
+}
+
 template <class Message>
 Message intact(const std::filesystem::path& log, const lcm::LogEvent& event) {
     const auto received = messages::receive<Message>(event.data, static_cast<std::size_t>(event.datalen));
@@ -75,8 +90,10 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
                 e.program = program_event.program;
                 e.seq = program_event.seq;
                 ++run.program_events;
-            } else {
-                (void)intact<firtp_lcm::control_t>(log, *event);
+            } else {  // controls: their own sequence per session
+                const auto control = intact<firtp_lcm::control_t>(log, *event);
+                e.program = control.session;
+                e.seq = control.seq;
                 ++run.controls;
             }
             const auto* bytes = static_cast<const std::uint8_t*>(event->data);
@@ -89,6 +106,7 @@ LoggedRun read_logged_run(const std::filesystem::path& log) {
             e.kind = LoggedEvent::Kind::state;
             e.eventnum = event->eventnum;
             e.state = run.states.size();
+            refuse_old_axis_state(log, *event);
             run.states.push_back(intact<firtp_lcm::axis_state_t>(log, *event));
             run.state_events.push_back(event->eventnum);
             run.events.push_back(std::move(e));

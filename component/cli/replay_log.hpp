@@ -18,7 +18,8 @@ struct LoggedEvent {
     std::int64_t eventnum = 0;
     std::string channel;                     // input: FIRTP_BLOCK, FIRTP_EVENT or FIRTP_CONTROL
     std::vector<std::uint8_t> data;          // input: the bytes as logged (sealed)
-    std::int64_t program = 0, seq = 0;       // input on FIRTP_BLOCK or FIRTP_EVENT: its place in the sequence
+    std::int64_t program = 0, seq = 0;       // input on FIRTP_BLOCK or FIRTP_EVENT: its place in the sequence;
+                                             // on FIRTP_CONTROL: its session (in program) and seq
     std::size_t state = 0;                   // state: index into LoggedRun::states
 };
 
@@ -32,7 +33,9 @@ struct LoggedRun {
 };
 
 // Throws std::runtime_error naming the log and the event: unreadable, a corrupted message, axis
-// states missing (seq gaps), a program whose blocks do not start at seq 1 or have gaps.
+// states missing (seq gaps), a program whose blocks do not start at seq 1 or have gaps, axis states
+// of the type before they named the control applied in their period (control_session, control_seq):
+// such logs are refused, the replay could not place the controls (docs/RECORDING.md).
 LoggedRun read_logged_run(const std::filesystem::path& log);
 
 }  // namespace firtp::cli

@@ -24,6 +24,7 @@
 #include "hal.h"
 
 #include <firtp/hal/component_logic.hpp>
+#include <firtp/hal/control_pins.hpp>
 #include <firtp/hal/module_number.hpp>
 #include <firtp/hal/pin_table.hpp>
 #include <firtp/hal/hal_pin_access.hpp>
@@ -139,6 +140,8 @@ bool has_block_stream = false;
 bool has_state_stream = false;
 std::uint32_t state_overruns = 0;
 std::uint32_t ticks = 0;
+firtp::control_pins::Levels controls;  // the operator controls applied last, and their generation
+std::uint32_t control_gen = 0;
 
 namespace pin = firtp::hal_pin;  // pins are shared with other threads (hal_pin_access.hpp)
 
@@ -153,9 +156,12 @@ bool read_block(void*, firtp::stream::BlockRecord& record) {
 void update(void*, long) {
     firtp::ComponentInputs in;
     in.enable = pin::get(pins->enable);
-    in.feed_scale = pin::get(pins->feed_scale);
-    in.hold = pin::get(pins->hold);
-    in.abort = pin::get(pins->abort);
+    // The controls as one whole generation of the bridge's, or the last one while it writes the next
+    // (control_pins.hpp): the progress record below names the generation applied in this period.
+    firtp::control_pins::read({pins->control_gen, pins->feed_scale, pins->hold, pins->abort}, controls, control_gen);
+    in.feed_scale = controls.feed_scale;
+    in.hold = controls.hold;
+    in.abort = controls.abort;
     in.strobe = pin::get(pins->block_strobe);
     for (int a = 0; a < firtp::max_axes; ++a) in.pin_block.block.target[a] = pin::get(pins->block_target[a]);
     in.pin_block.block.feed = pin::get(pins->block_feed);
@@ -214,7 +220,7 @@ void update(void*, long) {
             lost = hal_stream_write(&state_stream, record) != 0;
         }
         if (!lost) {
-            firtp::stream::pack_progress({out.program, out.next_seq}, ticks, static_cast<std::int32_t>(out.state.line),
+            firtp::stream::pack_progress({out.program, out.next_seq, control_gen}, ticks, static_cast<std::int32_t>(out.state.line),
                                          axes, record);
             lost = hal_stream_write(&state_stream, record) != 0;
         }
@@ -278,6 +284,7 @@ int make_pins() {
 #undef FIRTP_PIN
     if (r == 0) {
         *pins->feed_scale = 1.0;
+        *pins->control_gen = 0;  // unconnected: the levels are taken every period
         *pins->block_motion_type = 2;
         *pins->next_seq = 1;
     }
@@ -397,7 +404,8 @@ int fail(const char* what) {
 extern "C" int rtapi_app_main(void) {
     // firtp.so may stay mapped after an unload (unique C++ symbols): a reload starts these afresh.
     has_block_stream = has_state_stream = false;
-    state_overruns = ticks = 0;
+    state_overruns = ticks = control_gen = 0;
+    controls = {};
     comp_id = hal_init("firtp");
     if (comp_id < 0) return comp_id;
     if (axes < 1 || axes > firtp::max_axes) return fail(("axes=" + std::to_string(axes) + ": must be 1 to 9").c_str());

@@ -3,6 +3,7 @@
 // twice or is dropped silently.
 #include "chain_fixture.hpp"
 
+#include <firtp/hal/control_pins.hpp>
 #include <firtp/host.hpp>
 
 #include <gtest/gtest.h>
@@ -238,6 +239,64 @@ TEST(Bridge, CorruptedControlIsIgnoredAndReported) {
     chain.control(0.25, false, false);
     chain.run(2);
     EXPECT_EQ(chain.status().feed_scale, 0.25);
+}
+
+// Every axis state names the control whose levels its period applied (axis_state_t control_session,
+// control_seq; what `firtp replay` places the controls by): none at first; of two taken before one
+// period, the later; a new session's own count; an older message ignored, not named.
+TEST(Bridge, EveryAxisStateNamesTheControlAppliedInItsPeriod) {
+    test::Chain chain(test::message_machine());
+    chain.run(2);
+    EXPECT_EQ(chain.states.back().control_session, 0);
+    EXPECT_EQ(chain.states.back().control_seq, 0);
+    chain.control(0.5, false, false);  // session 1 seq 1, superseded before a period reads it
+    chain.control(0.6, true, false);   // seq 2
+    chain.run(1);
+    EXPECT_EQ(chain.states.back().control_session, 1);
+    EXPECT_EQ(chain.states.back().control_seq, 2);
+    chain.run(3);
+    EXPECT_EQ(chain.states.back().control_seq, 2);
+    EXPECT_EQ(chain.status().feed_scale, 0.6);
+    chain.control(0.7, false, false, 9);  // a new host: session 9, seq 3 (the fixture counts on)
+    chain.run(1);
+    EXPECT_EQ(chain.states.back().control_session, 9);
+    EXPECT_EQ(chain.states.back().control_seq, 3);
+    firtp_lcm::control_t older{};
+    older.session = 9;
+    older.seq = 2;
+    older.feed_scale = 0.1;
+    messages::publish(*chain.lcm, messages::control_channel, older);
+    chain.run(2);
+    EXPECT_EQ(chain.states.back().control_seq, 3);
+    EXPECT_EQ(chain.status().feed_scale, 0.7);
+}
+
+// The pins' sequence lock (control_pins.hpp): the reader takes the levels only as one whole
+// generation; while the writer is between its two generation stores it keeps the last ones.
+TEST(ControlPins, TheReaderTakesOnlyWholeGenerations) {
+    hal_u32_t gen = 0;
+    hal_float_t feed = 1.0;
+    hal_bit_t hold = false, abort = false;
+    const control_pins::Pins pins{&gen, &feed, &hold, &abort};
+    control_pins::Levels levels{0.9, false, false};
+    std::uint32_t applied = 7;
+    ASSERT_TRUE(control_pins::read(pins, levels, applied));  // unconnected: 0, taken as they are
+    EXPECT_EQ(applied, 0u);
+    EXPECT_EQ(levels.feed_scale, 1.0);
+    EXPECT_EQ(control_pins::write(pins, 0, {0.5, true, false}), 2u);
+    ASSERT_TRUE(control_pins::read(pins, levels, applied));
+    EXPECT_EQ(applied, 2u);
+    EXPECT_EQ(levels.feed_scale, 0.5);
+    EXPECT_TRUE(levels.hold);
+    gen = 3;  // the writer has begun generation 4: feed written, hold not yet
+    feed = 0.25;
+    EXPECT_FALSE(control_pins::read(pins, levels, applied));
+    EXPECT_EQ(applied, 2u);
+    EXPECT_EQ(levels.feed_scale, 0.5);
+    gen = 4;
+    ASSERT_TRUE(control_pins::read(pins, levels, applied));
+    EXPECT_EQ(applied, 4u);
+    EXPECT_EQ(levels.feed_scale, 0.25);
 }
 
 namespace {

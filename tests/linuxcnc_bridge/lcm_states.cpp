@@ -6,13 +6,14 @@
 //       checks the log's FIRTP_AXIS_STATE and FIRTP_STATUS: every message intact (crc), the states'
 //       seq 1, 2, ... and ticks consecutive, no status reporting lost states; writes the states as
 //       examples/linuxcnc/record.hal's samples (X Y Z scaled by 2^40, line, 0, 0, at rest), an
-//       "overrun" line for every missing period, so that firtp-tp-check measures them. Exit 1 on
-//       any problem, naming it.
+//       "overrun" line for every missing period, so that firtp-tp-check measures them; counts the
+//       operator controls the states name as applied. Exit 1 on any problem, naming it.
 #include <firtp/messages.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -69,6 +70,8 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
         return 1;
     }
     long states = 0, statuses = 0, corrupted = 0, seq_gaps = 0, tick_gaps = 0, lost_reported = 0, missing = 0;
+    long controls = 0;  // control changes the states name (axis_state_t control_session, control_seq)
+    std::int64_t control_session = 0, control_seq = 0;
     std::string last_lost_text;
     std::int64_t last_seq = 0, last_tick = -1, first_tick = -1;
     int last_line = 0;
@@ -119,11 +122,16 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
         for (int a = axes; a < 3; ++a) std::fputs("0 ", out);  // firtp-tp-check reads X Y Z
         std::fprintf(out, "%d 0 0 %d\n", m.line, at_rest ? 1 : 0);
         last_line = m.line;
+        if (m.control_seq != 0 && (m.control_session != control_session || m.control_seq != control_seq)) ++controls;
+        control_session = m.control_session;
+        control_seq = m.control_seq;
         ++states;
     }
     std::fclose(out);
     if (states == 0) problem("no FIRTP_AXIS_STATE in the log");
     if (statuses == 0) problem("no FIRTP_STATUS in the log");
+    std::printf("controls     %ld named by the states as applied (the last: session %lld seq %lld)\n", controls,
+                static_cast<long long>(control_session), static_cast<long long>(control_seq));
     std::printf("states       %ld (seq 1..%lld, ticks %lld..%lld), last line %d\n", states,
                 static_cast<long long>(last_seq), static_cast<long long>(first_tick), static_cast<long long>(last_tick),
                 last_line);

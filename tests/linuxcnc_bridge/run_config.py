@@ -23,6 +23,7 @@ lcm-logger's log is counted by firtp-lcm-dump and reported. Exit 0 passed, 1 fai
 """
 import argparse
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -161,6 +162,10 @@ def main():
         sys.stdout.write(got.stdout)
         if got.returncode != 0:
             failed.append("LCM states")
+        # The operator's controls reach firtp.so as generations (lcm.hal nets firtp.control-gen): the
+        # axis states name the ones applied, as `firtp replay` needs them.
+        if a.operator and re.search(r"^controls +0 named", got.stdout, re.M):
+            failed.append("no axis state names an operator control (is firtp.control-gen netted?)")
         check = [a.check_tool, samples, "--ini", ini, "--program", a.program] + checks
         if a.plan:
             plan_csv = os.path.join(work, "plan.csv")

@@ -6,12 +6,15 @@
    edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL
    edit_log.py IN OUT nudge CHANNEL INDEX  change the lowest bit of position X in the INDEX-th axis state,
                                            crc recomputed (an intact message that says something else)
+   edit_log.py IN OUT old CHANNEL          every axis state as firtp wrote it before control_session and
+                                           control_seq: that type's fingerprint, without those 16 bytes, sealed
 """
 import struct
 import sys
 import zlib
 
 POSITION_X = 44  # axis_state_t: fingerprint, utime, seq, tick (8 bytes each), time (8), line (4)
+AXIS_STATE_BEFORE_CONTROLS = bytes.fromhex("c4dee41eef8eeb16")  # its fingerprint then
 
 
 def sealed(payload):
@@ -48,6 +51,8 @@ def main():
             continue
         if op == "flip" and seen == arg:
             payload = payload[:20] + bytes([payload[20] ^ 1]) + payload[21:]
+        if op == "old":  # control_session, control_seq: the 16 bytes before the crc
+            payload = sealed(AXIS_STATE_BEFORE_CONTROLS + payload[8:-20] + payload[-4:])
         if op == "nudge" and seen == arg:
             at = POSITION_X + 7
             payload = sealed(payload[:at] + bytes([payload[at] ^ 1]) + payload[at + 1:])

@@ -38,7 +38,24 @@ expect "no machine, --ini given" 0 "result +equal" "$firtp" replay "$work/no_con
 edit dropped drop FIRTP_AXIS_STATE 100
 expect "axis states missing" 1 "1 axis states missing before FIRTP_AXIS_STATE seq 101 \\(event [0-9]+\\)" "$firtp" replay "$work/dropped.lcmlog"
 edit no_block drop FIRTP_BLOCK 2
-expect "a block missing" 1 "misses 1 of its blocks 1..3 \\(first: seq 2\\)" "$firtp" replay "$work/no_block.lcmlog"
+expect "a block missing" 1 "misses 2 of its blocks 1..5 \\(first: seq 2\\)" "$firtp" replay "$work/no_block.lcmlog"
+# Operator controls, each fed in the period its axis state names (record_controls.sh made this log:
+# feed override, hold, resume and override again, sent at wall-clock times during the diamond).
+controls=$dir/diamond_controls.lcmlog
+expect "the log with controls replays" 0 "result +equal" "$firtp" replay "$controls"
+expect "its controls placed by the states" 0 "^fed +5 blocks and 21 controls in the periods the axis states name" \
+  "$firtp" replay "$controls"
+# A control the component applied, missing from the log (every 5th dropped: seq 5, the override to
+# 0.6, applied in the period of axis state 820): named, nothing replayed.
+python3 "$dir/edit_log.py" "$controls" "$work/no_control.lcmlog" drop FIRTP_CONTROL 5
+expect "an applied control missing" 1 \
+  "FIRTP_AXIS_STATE seq 820 \\(log event [0-9]+\\) says control session [0-9]+ seq 5 was taken, but the log does not hold it" \
+  "$firtp" replay "$work/no_control.lcmlog"
+# A log from before axis_state_t named the control applied: refused, naming the fields it lacks.
+edit old old FIRTP_AXIS_STATE
+expect "axis states without the control fields" 1 \
+  "event [0-9]+ on FIRTP_AXIS_STATE: an axis_state_t without control_session and control_seq" \
+  "$firtp" replay "$work/old.lcmlog"
 edit flipped flip FIRTP_BLOCK 3
 expect "a corrupted block" 1 "event [0-9]+ on FIRTP_BLOCK: corrupted: CRC mismatch" "$firtp" replay "$work/flipped.lcmlog"
 expect "no such log" 1 "no log file" "$firtp" replay "$work/none.lcmlog"
@@ -60,6 +77,6 @@ expect "record --ini: the machine first" 0 "^0 .*FIRTP_CONFIG config_t seq=1 com
   "$firtp" "$work" "$examples"
 # On a terminal (script(1) gives it one) the replay shows its progress on stderr.
 if command -v script > /dev/null; then
-  expect "progress on a terminal" 0 "replay: [0-9]+ of 1231 axis states \\([0-9]+ %\\)" \
+  expect "progress on a terminal" 0 "replay: [0-9]+ of 1226 axis states \\([0-9]+ %\\)" \
     script -qec "'$firtp' replay '$log'" /dev/null
 fi

@@ -2,6 +2,7 @@
 
 #include <hal.h>
 
+#include <firtp/hal/control_pins.hpp>
 #include <firtp/hal/hal_pin_access.hpp>
 #include <firtp/hal/stream_records.hpp>
 
@@ -32,7 +33,7 @@ const char* const pairs[] = {
     "firtp-bridge.state",      "firtp.state",            "firtp-bridge.error-code",  "firtp.error-code",
     "firtp-bridge.rejected",   "firtp.rejected",         "firtp-bridge.tick",        "firtp.tick",
     "firtp-bridge.current-line", "firtp.current-line",   "firtp-bridge.events",      "firtp.events",
-    nullptr,                   nullptr};
+    "firtp-bridge.control-gen", "firtp.control-gen",     nullptr,                    nullptr};
 
 
 }  // namespace
@@ -48,6 +49,7 @@ struct Bridge::Pins {
     hal_u32_t* tick;          // in
     hal_s32_t* current_line;  // in
     hal_u32_t* events;        // in: program events the component has reached
+    hal_u32_t* control_gen;   // out: the generation of feed_scale, hold and abort (control_pins.hpp)
 };
 
 struct Bridge::Streams {
@@ -78,7 +80,11 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
     r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->tick, comp_id_, "%s.tick", name);
     r = r ? r : hal_pin_s32_newf(HAL_IN, &pins_->current_line, comp_id_, "%s.current-line", name);
     r = r ? r : hal_pin_u32_newf(HAL_IN, &pins_->events, comp_id_, "%s.events", name);
-    if (r == 0) *pins_->feed_scale = 1.0;
+    r = r ? r : hal_pin_u32_newf(HAL_OUT, &pins_->control_gen, comp_id_, "%s.control-gen", name);
+    if (r == 0) {
+        *pins_->feed_scale = 1.0;
+        *pins_->control_gen = 0;
+    }
     r = r ? r : hal_stream_attach(&streams_->blocks, comp_id_, options.block_key, stream::block_types);
     if (r == 0 && options.state_key != 0) {
         r = hal_stream_attach(&streams_->states, comp_id_, options.state_key, stream::state_types);
@@ -261,10 +267,31 @@ void Bridge::on_control(const firtp_lcm::control_t* m) {
     }
     hold_ = m->hold;
     abort_ = m->abort;
-    hal_pin::set(pins_->feed_scale, feed_scale_);
-    hal_pin::set(pins_->hold, hold_);
-    hal_pin::set(pins_->abort, abort_ || fault_);
+    // The three levels and the generation that names them, as one (control_pins.hpp); the axis state
+    // of every period that applied this generation names this control (forward_states).
+    control_gen_ = control_pins::write({pins_->control_gen, pins_->feed_scale, pins_->hold, pins_->abort}, control_gen_,
+                                       {feed_scale_, hold_, abort_ || fault_});
+    controls_taken_.push_back({control_gen_, m->session, m->seq});
+    // Bounded, should firtp.control-gen not be netted (every state names generation 0): should a
+    // state still name a generation left out here, name_applied_control reports it.
+    if (controls_taken_.size() > max_controls_unapplied) controls_taken_.pop_front();
     status_due_ = true;
+}
+
+// The control whose levels the component applied in a period: the one taken as generation `gen`
+// (earlier ones were superseded before a period read them). 0: none (or control-gen unconnected).
+void Bridge::name_applied_control(std::uint32_t gen) {
+    while (!controls_taken_.empty() && static_cast<std::int32_t>(controls_taken_.front().gen - gen) <= 0) {
+        applied_control_ = controls_taken_.front();
+        controls_taken_.pop_front();
+    }
+    if (gen != applied_control_.gen && !unknown_gen_reported_) {  // never expected: the pins are not this bridge's
+        unknown_gen_reported_ = true;
+        report(firtp_lcm::status_t::ERROR_LOST_STATE,
+               "the component applied control generation " + std::to_string(gen) +
+                   ", which this bridge did not write: axis states name control 0 (is firtp.control-gen netted to " +
+                   "another bridge?)");
+    }
 }
 
 void Bridge::forward_states() {
@@ -308,6 +335,10 @@ void Bridge::forward_states() {
         }
         m.program = static_cast<std::int64_t>(progress.program);
         m.next_seq = static_cast<std::int64_t>(progress.next_seq);
+        name_applied_control(progress.control_gen);
+        const bool known = progress.control_gen == applied_control_.gen;
+        m.control_session = known ? applied_control_.session : 0;
+        m.control_seq = known ? applied_control_.seq : 0;
         if (options_.every_period) {
             m.seq = ++state_seq_;
             messages::publish(*lcm_, messages::axis_state_channel, m);

@@ -5,6 +5,8 @@
 #include <firtp/hal/component_logic.hpp>
 #include <firtp/hal/stream_records.hpp>
 
+#include <type_traits>
+
 namespace firtp {
 namespace {
 
@@ -27,6 +29,9 @@ static_assert(stream::default_block_key == firtp_lcm::config_t::BLOCK_STREAM_KEY
               stream::default_state_key == firtp_lcm::config_t::STATE_STREAM_KEY);
 static_assert(BridgeOptions{}.block_key == stream::default_block_key &&
               BridgeOptions{}.state_key == stream::default_state_key);
+// Every axis state names the control applied in its period by that control's own session and seq.
+static_assert(std::is_same_v<decltype(firtp_lcm::axis_state_t::control_session), decltype(firtp_lcm::control_t::session)> &&
+              std::is_same_v<decltype(firtp_lcm::axis_state_t::control_seq), decltype(firtp_lcm::control_t::seq)>);
 
 }  // namespace
 }  // namespace firtp

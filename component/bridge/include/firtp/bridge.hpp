@@ -74,6 +74,7 @@ private:
     void write(const stream::BlockRecord& record, std::int64_t program, std::int64_t seq);
     void publish_reached();
     void on_control(const firtp_lcm::control_t* message);  // intact
+    void name_applied_control(std::uint32_t gen);
     void report(std::int32_t error, std::string text);
     void forward_states();
     void publish_status();
@@ -92,6 +93,16 @@ private:
     std::int64_t control_seq_ = 0;
     double feed_scale_ = 1.0;
     bool hold_ = false, abort_ = false;
+    // Controls taken, in order, until an axis state names their generation or a later one.
+    struct ControlTaken {
+        std::uint32_t gen = 0;  // control_pins.hpp
+        std::int64_t session = 0, seq = 0;
+    };
+    static constexpr std::size_t max_controls_unapplied = 1 << 16;
+    std::uint32_t control_gen_ = 0;
+    std::deque<ControlTaken> controls_taken_;
+    ControlTaken applied_control_;  // named by the latest axis state
+    bool unknown_gen_reported_ = false;
     std::int32_t error_ = 0;
     std::string error_text_;
     std::int64_t rejected_ = 0;

@@ -47,6 +47,9 @@
     X(feed_scale, "feed-scale", float, IN, "feed override, 1 = as programmed")                                 \
     X(hold, "hold", bit, IN, "stop on the path and wait")                                                      \
     X(abort, "abort", bit, IN, "stop on the path and drop the program")                                        \
+    X(control_gen, "control-gen", u32, IN,                                                                     \
+      "from the LCM bridge: which operator control feed-scale, hold and abort hold (odd while it writes them: " \
+      "they are taken at the next even value); unconnected: 0, the three are taken every period")              \
     FIRTP_EVENT_PINS(X)
 
 // Program events (M3/M4/M5 S, M7/M8/M9, T M6, M0/M1, M2/M30) as motion reaches them; LinuxCNC's

@@ -67,7 +67,9 @@ inline void unpack(const hal_stream_data* in, BlockRecord& r) {
 // Every period: one record per group of six axes, then one progress record.
 // Axis group: tick, line, group (0: axes 0-5, 1: axes 6-8), then position, velocity, acceleration
 // of six axes. Progress: tick, line, group = groups_for(axes), then the component's program and
-// next_seq after the period (axis_state_t's), each as low and high 32-bit halves in a double (exact).
+// next_seq after the period (axis_state_t's), each as low and high 32-bit halves in a double (exact),
+// then the generation of the controls applied in the period (control_pins.hpp; the bridge names
+// their control_t session and seq).
 inline constexpr const char* state_types = "usu" "fff" "fff" "fff" "fff" "fff" "fff";
 inline constexpr int state_elements = 21;
 inline constexpr int axes_per_group = 6;
@@ -80,6 +82,7 @@ inline int records_per_period(int axes) { return groups_for(axes) + 1; }  // the
 struct Progress {
     std::uint64_t program = 0;
     std::uint64_t next_seq = 1;
+    std::uint32_t control_gen = 0;
 };
 
 inline void pack_state(const AxisState& s, std::int64_t tick, int group, int axes, hal_stream_data* out) {
@@ -103,12 +106,13 @@ inline void pack_progress(const Progress& p, std::int64_t tick, std::int32_t lin
     out[4].f = static_cast<double>(p.program >> 32);
     out[5].f = static_cast<double>(p.next_seq & 0xffffffffu);
     out[6].f = static_cast<double>(p.next_seq >> 32);
-    for (int i = 7; i < state_elements; ++i) out[i].f = 0.0;
+    out[7].f = static_cast<double>(p.control_gen);
+    for (int i = 8; i < state_elements; ++i) out[i].f = 0.0;
 }
 
 inline Progress unpack_progress(const hal_stream_data* in) {
     const auto half = [](double v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)); };
-    return {half(in[3].f) | half(in[4].f) << 32, half(in[5].f) | half(in[6].f) << 32};
+    return {half(in[3].f) | half(in[4].f) << 32, half(in[5].f) | half(in[6].f) << 32, static_cast<std::uint32_t>(in[7].f)};
 }
 
 }  // namespace firtp::stream
