@@ -555,10 +555,10 @@ void Lookahead::set_rate(double rate) {
 }
 
 void Lookahead::replan_from_front(bool resuming) {
-    if (resuming) {  // the hold's stop goes; the plan it replaces is kept should the new one fail
-        take_snapshot();
-        unsplit();
-    }
+    // The accepted plan is kept should no plan at the new rate pass the check (it goes on, and the
+    // change is tried again at the next tick): the block under way may not be re-planned unchecked.
+    take_snapshot();
+    if (resuming) unsplit();  // the hold's stop goes
     replan(0);
 }
 
