@@ -321,6 +321,17 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         }
         ++stats_.unfit;  // entered from rest: a defect
     }
+    // The next step freezes when its kernel starts: a plan whose kernel starts before the last
+    // sample already sent (one period before now) would jump. No corner to lower for it: replan()
+    // keeps the accepted plan (a rate change tries again at the next tick; a new block starts
+    // from rest after it).
+    if (first == 0 && frozen_.moving) {
+        const NextStep n = next_step();
+        if (n.centre - 0.5 * n.step.kernel.width() < -(1.0 + 1e-9) * parameters_.period) {
+            *bad = count_ - 1;
+            return false;
+        }
+    }
     build_legs(from);
     double end = enter_[first];
     double width = 0.0;  // the widest kernel of these legs: the reach of a change among them
