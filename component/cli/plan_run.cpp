@@ -50,14 +50,34 @@ PlanRun prepare_plan(const PlanOptions& options) {
     run.machine = load_machine_config(options);
     run.parameters = run.machine.planner_parameters();
     run.program = read_gcode(options.program, run.machine);
+    run.blocks = run.program.blocks.size();
     run.points = moving_points(run.program, run.feed_time);
+    run.trajectory.start = run.program.start;
+    return run;
+}
+
+PlanRun prepare_spooled_plan(const PlanOptions& options) {
+    PlanRun run;
+    run.machine = load_machine_config(options);
+    run.parameters = run.machine.planner_parameters();
+    run.program.file = options.program.string();
+    auto spool = std::make_shared<ProgramSpool>(run.program.start);
+    read_gcode(options.program, run.machine, run.program.start, *spool);
+    spool->close();
+    run.program.events = std::move(spool->events());
+    run.blocks = spool->blocks();
+    run.feed_time = spool->feed_time();
+    run.points = PathPoints(std::shared_ptr<const ProgramSpool>(spool));
+    run.spool = std::move(spool);
     run.trajectory.start = run.program.start;
     return run;
 }
 
 void plan_program(PlanRun& run, TrajectorySink& sink) {
     try {
-        const StreamedTrajectory streamed = plan_trajectory(run.parameters, run.program.start, run.program.blocks, sink);
+        const StreamedTrajectory streamed =
+            run.spool ? plan_trajectory(run.parameters, run.program.start, *run.spool->read_blocks(), sink)
+                      : plan_trajectory(run.parameters, run.program.start, run.program.blocks, sink);
         run.trajectory.cycle_time = streamed.cycle_time;
         run.trajectory.stats = streamed.stats;
         run.sample_count = streamed.samples;
@@ -81,7 +101,7 @@ PlanRun run_plan(const PlanOptions& options) {
 
 void measure_plan(PlanRun& run) {
     run.sample_count = run.trajectory.samples.size();
-    take_measurement(run, measure(run.trajectory.samples, run.points, run.parameters.period));
+    take_measurement(run, measure(run.trajectory.samples, run.points.kept(), run.parameters.period));
 }
 
 void take_measurement(PlanRun& run, Measured measured) {

@@ -3,17 +3,23 @@
 namespace firtp::cli {
 
 PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples)
-    : run_(run), progress_(progress), keep_(keep_samples),
-      measure_(run.points, run.parameters.period, [this](std::size_t i, double e) { corner_measured(i, e); }) {
+    : run_(run), progress_(progress), keep_(keep_samples) {
     if (csv) csv_.emplace(*csv);
+    auto on_corner = [this](std::size_t i, double e) { corner_measured(i, e); };
+    if (run.points.spooled()) {
+        points_ = run.points.read();
+        measure_.emplace(*points_, run.parameters.period, on_corner);
+    } else {
+        measure_.emplace(run.points.kept(), run.parameters.period, on_corner);
+    }
 }
 
 void PlanSink::sample(const AxisState& state) {
     if (csv_) csv_->row(state);
     if (keep_) run_.trajectory.samples.push_back(state);
     plot_.add(state);
-    measure_.add(state);
-    if (progress_) progress_->update(measure_.segment(), state.time);
+    measure_->add(state);
+    if (progress_) progress_->update(measure_->segment(), state.time);
 }
 
 void PlanSink::corner(const CornerReport& report) {
@@ -34,7 +40,7 @@ void PlanSink::corner_measured(std::size_t index, double error) {
 }
 
 void PlanSink::finish() {
-    take_measurement(run_, measure_.finish());
+    take_measurement(run_, measure_->finish());
     if (run_.measured.corner_errors.size() != run_.trajectory.corners.size()) plot_.zooms.clear();  // unpaired
 }
 

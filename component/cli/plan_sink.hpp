@@ -11,6 +11,7 @@
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
 
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -38,7 +39,8 @@ private:
     std::optional<CsvWriter> csv_;
     ProgressLine* progress_;
     bool keep_;
-    MeasureStream measure_;
+    std::unique_ptr<PointSource> points_;  // the spool's, when spooled
+    std::optional<MeasureStream> measure_;
     PlotSamples plot_;
     std::vector<std::pair<std::size_t, double>> pending_;  // measured before their report came
 };

@@ -32,7 +32,9 @@ void row(Script& s, const Eigen::Vector2d& xy) {
 void data_blocks(Script& s, const PlanRun& run, const PlotSamples& plot) {
     const std::size_t step = std::max<std::size_t>(1, (run.points.size() + max_program_rows - 1) / max_program_rows);
     s << "$program << EOD\n";
-    for (std::size_t i = 0; i < run.points.size(); i += step) s << run.points[i][0] << " " << run.points[i][1] << "\n";
+    run.points.for_each([&](std::size_t i, const AxisVector& p) {
+        if (i % step == 0) s << p[0] << " " << p[1] << "\n";
+    });
     if ((run.points.size() - 1) % step != 0) s << run.points.back()[0] << " " << run.points.back()[1] << "\n";
     s << "EOD\n$path << EOD\n";
     for (const auto& r : plot.path.rows()) s << r[0] << " " << r[1] << "\n";
@@ -66,7 +68,7 @@ void overview_ranges(Script& s, const PlanRun& run, const PlotSamples& plot) {
         low = low.cwiseMin(p.head<2>());
         high = high.cwiseMax(p.head<2>());
     };
-    for (const AxisVector& p : run.points) grow(p);
+    run.points.for_each([&](std::size_t, const AxisVector& p) { grow(p); });
     if (plot.any) {
         low = low.cwiseMin(plot.low);
         high = high.cwiseMax(plot.high);

@@ -41,12 +41,12 @@ std::string axis_max(const AxisVector& v, int decimals) {
 
 // One line per kind of non-motion event, in the order of EventKind (the end, M2/M30, which every
 // program has, only in the JSON).
-void print_events(std::ostream& out, const Program& program) {
+void print_events(std::ostream& out, const Program& program, std::size_t blocks) {
     std::array<std::size_t, event_kinds> count{};
     double dwell = 0.0, after_last = 0.0;  // a dwell after the last move has no block to delay
     for (const ProgramEvent& e : program.events) {
         ++count[static_cast<std::size_t>(e.kind)];
-        if (e.kind == EventKind::dwell) (e.before_block < program.blocks.size() ? dwell : after_last) += e.value;
+        if (e.kind == EventKind::dwell) (e.before_block < blocks ? dwell : after_last) += e.value;
     }
     for (std::size_t k = 0; k < count.size(); ++k) {
         const auto kind = static_cast<EventKind>(k);
@@ -80,7 +80,7 @@ void print_summary(std::ostream& out, const PlanRun& run, const std::string& pro
         << " mm/s\n"
         << "axes         max acceleration " << axis_max(m.max_acceleration, 0) << " mm/s^2, jerk "
         << axis_max(m.max_jerk, 0) << " mm/s^3\n";
-    print_events(out, run.program);
+    print_events(out, run.program, run.blocks);
     for (const auto& path : written) out << "wrote        " << path.string() << "\n";
 }
 
