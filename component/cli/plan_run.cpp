@@ -68,6 +68,7 @@ PlanRun prepare_spooled_plan(const PlanOptions& options) {
     run.blocks = spool->blocks();
     run.feed_time = spool->feed_time();
     run.points = PathPoints(std::shared_ptr<const ProgramSpool>(spool));
+    run.corners.spool();
     run.spool = std::move(spool);
     run.trajectory.start = run.program.start;
     return run;
@@ -90,10 +91,11 @@ PlanRun run_plan(const PlanOptions& options) {
     PlanRun run = prepare_plan(options);
     struct Keep : TrajectorySink {
         Trajectory& t;
-        explicit Keep(Trajectory& into) : t(into) {}
         void sample(const AxisState& state) override { t.samples.push_back(state); }
-        void corner(const CornerReport& report) override { t.corners.push_back(report); }
-    } keep(run.trajectory);
+        CornerList& corners;
+        Keep(Trajectory& into, CornerList& c) : t(into), corners(c) {}
+        void corner(const CornerReport& report) override { corners.push_back(report); }
+    } keep(run.trajectory, run.corners);
     plan_program(run, keep);
     measure_plan(run);
     return run;
@@ -109,11 +111,11 @@ void take_measurement(PlanRun& run, Measured measured) {
     if (run.sample_count > 0) run.trajectory.cycle_time = run.measured.cycle_time;
 
     // Interior points and corners are the same junctions, in order, when both skipped the same blocks.
-    const auto& corners = run.trajectory.corners;
-    const bool matched = run.measured.corner_errors.size() == corners.size();
-    run.corner_errors.clear();
-    for (std::size_t i = 0; i < corners.size(); ++i)
-        run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
+    // A streamed measurement gave its errors to run.corners as it went, a batch one has them here.
+    auto& corners = run.corners;
+    if (corners.errors_count() == 0)
+        for (const double e : run.measured.corner_errors) corners.add_error(e);
+    corners.pair_errors();
 
     run.closed_form_cycle_time = 0.0;
     if (run.parameters.fixed_chain && run.points.size() > 1) {

@@ -1,6 +1,7 @@
 // One planned program: machine, blocks, sampled trajectory and what was measured on it.
 #pragma once
 
+#include "corner_list.hpp"
 #include "path_points.hpp"
 #include "plan_options.hpp"
 #include "program_spool.hpp"
@@ -26,7 +27,7 @@ struct PlanRun {
     std::size_t sample_count = 0;    // samples planned (or received), kept or not
     PathPoints points;               // start, then the end of every block that moves
     Measured measured;
-    std::vector<std::optional<double>> corner_errors;  // measured, one per trajectory.corners entry
+    CornerList corners;              // the planner's reports and their measured errors
     double closed_form_cycle_time = 0.0;  // the paper's fixed chain: sum(Tv) + sum(Td - Tk) + Td
     double feed_time = 0.0;               // sum(Tv): every block at its programmed feed, no corners
 };

@@ -12,6 +12,7 @@
 #include <firtp/trajectory.hpp>
 
 #include <memory>
+#include <deque>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -42,7 +43,8 @@ private:
     std::unique_ptr<PointSource> points_;  // the spool's, when spooled
     std::optional<MeasureStream> measure_;
     PlotSamples plot_;
-    std::vector<std::pair<std::size_t, double>> pending_;  // measured before their report came
+    std::deque<CornerReport> reports_;  // reported, not yet measured
+    std::deque<double> errors_;         // measured before their report came
 };
 
 // The plot's samples of a run that kept them.

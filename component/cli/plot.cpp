@@ -50,8 +50,8 @@ void data_blocks(Script& s, const PlanRun& run, const PlotSamples& plot) {
 }
 
 std::string zoom_title(const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
-    const CornerReport& c = run.trajectory.corners[zoom.corner];
-    const auto& measured = run.corner_errors[zoom.corner];
+    const CornerReport& c = run.corners[zoom.corner];
+    const auto& measured = run.corners.error(zoom.corner);
     std::string title = cat("#", std::to_string(z + 1), " line ", std::to_string(c.line), ", ",
                             fixed_text(c.beta * 180.0 / std::numbers::pi, 1), " deg, Tk ", fixed_text(c.Tk * 1e3, 2),
                             " ms\nerror ", measured ? fixed_text(*measured, 4) : std::string("?"));
@@ -85,7 +85,7 @@ void overview_plot(Script& s, const PlanRun& run, const PlotSamples& plot) {
          "set title 'XY path' noenhanced\nset xlabel 'x [mm]'\nset ylabel 'y [mm]'\nset key below horizontal\n";
     overview_ranges(s, run, plot);
     for (std::size_t z = 0; z < zooms.size(); ++z) {
-        const AxisVector& c = run.trajectory.corners[zooms[z].corner].point;
+        const AxisVector& c = run.corners[zooms[z].corner].point;
         s << "set label " << (z + 1) << " '#" << (z + 1) << "' at " << c[0] << "," << c[1]
           << " offset 0.8,0.8 front tc 'dark-red'\n";
     }
@@ -96,7 +96,7 @@ void overview_plot(Script& s, const PlanRun& run, const PlotSamples& plot) {
 }
 
 void zoom_plot(Script& s, const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
-    const CornerReport& c = run.trajectory.corners[zoom.corner];
+    const CornerReport& c = run.corners[zoom.corner];
     const double h = zoom.half_width;
     const double x = 0.5 + 0.25 * static_cast<double>(z % 2);
     const double y = 0.695 - 0.255 * static_cast<double>(z / 2);

@@ -13,14 +13,14 @@ namespace {
 
 // The largest measured corner error, and the corners above their tolerance.
 std::string corner_line(const PlanRun& run) {
-    const auto& corners = run.trajectory.corners;
+    const auto& corners = run.corners;
     std::size_t worst = corners.size();
     std::size_t over = 0;
     double worst_error = -1.0;
     double worst_excess = 0.0;
     for (std::size_t i = 0; i < corners.size(); ++i) {
-        if (!run.corner_errors[i]) continue;
-        const double error = *run.corner_errors[i];
+        if (!run.corners.error(i)) continue;
+        const double error = *run.corners.error(i);
         if (error > worst_error) worst = i, worst_error = error;
         if (error > corners[i].epsilon) ++over, worst_excess = std::max(worst_excess, error - corners[i].epsilon);
     }
@@ -66,11 +66,11 @@ void print_events(std::ostream& out, const Program& program, std::size_t blocks)
 void print_summary(std::ostream& out, const PlanRun& run, const std::string& program_name,
                    const std::vector<std::filesystem::path>& written) {
     std::size_t exact = 0;
-    for (const CornerReport& c : run.trajectory.corners) exact += c.exact_stop ? 1 : 0;
+    for (const CornerReport& c : run.corners) exact += c.exact_stop ? 1 : 0;
     const Measured& m = run.measured;
     out << "program      " << program_name << "\n"
         << "machine      " << machine_text(run) << "\n"
-        << "blocks       " << run.points.size() - 1 << " moving, " << run.trajectory.corners.size() << " corners ("
+        << "blocks       " << run.points.size() - 1 << " moving, " << run.corners.size() << " corners ("
         << exact << " exact stop)\n"
         << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (" << reference_time_text(run) << ")\n"
         << "corners      " << corner_line(run) << "\n"

@@ -172,7 +172,8 @@ double MeasureStream::chord_distance(std::size_t c, std::size_t j) {
 }
 
 void MeasureStream::close_corner(std::size_t j, double error) {
-    m_.corner_errors.push_back(error);  // corner j is entry j - 1: corners close in order
+    if (keep_errors_) m_.corner_errors.push_back(error);  // corner j is entry j - 1: corners close in order
+    m_.max_corner_error = std::max(m_.max_corner_error, error);
     if (on_corner_) on_corner_(j - 1, error);
 }
 
@@ -247,7 +248,6 @@ Measured MeasureStream::finish() {
     for (std::size_t j = tracked_[(n - 1) % 2] + 2; j <= last_; ++j)  // never reached: the last chord and the end
         close_corner(j, std::min(std::min(inf, chord_distance(n - 2, j)), (end - point(j)).norm()));
     m_.max_contour_error = stray_;
-    for (double e : m_.corner_errors) m_.max_corner_error = std::max(m_.max_corner_error, e);
     return std::move(m_);
 }
 

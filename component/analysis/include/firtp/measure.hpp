@@ -59,6 +59,8 @@ public:
     MeasureStream& operator=(const MeasureStream&) = delete;
     void add(const AxisState& sample);
     Measured finish();
+    // Measured::corner_errors stays empty (the callback has them; max_corner_error is still found).
+    void forget_corner_errors() { keep_errors_ = false; }
 
     // The segment of the program the newest tracked sample is on (blocks done, for progress).
     std::size_t segment() const { return k_; }
@@ -92,6 +94,7 @@ private:
     double period_;
     double tie_ = 0.0;
     CornerCallback on_corner_;
+    bool keep_errors_ = true;
     Measured m_;
     std::size_t n_ = 0;                      // samples so far
     std::array<AxisVector, 4> recent_{};     // the last four positions, by sample index mod 4
