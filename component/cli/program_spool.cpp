@@ -1,18 +1,9 @@
 #include "program_spool.hpp"
 
-#include <firtp/text_cat.hpp>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
 #include <stdexcept>
-#include <string>
-
-#include <stdlib.h>
-#include <unistd.h>
 
 namespace firtp::cli {
 namespace {
@@ -49,14 +40,10 @@ Block block_of(const Record& r) {
     return b;
 }
 
-std::runtime_error spool_error(const char* what) {
-    return std::runtime_error(cat("the program's temporary file: ", what, ": ", std::strerror(errno)));
-}
-
 // Reads the records in order, a few hundred at a time.
 class Records {
 public:
-    Records(int fd, std::size_t count) : fd_(fd), count_(count) {}
+    Records(const UnnamedFile& file, std::size_t count) : file_(file), count_(count) {}
     bool next(Block& block) {
         if (taken_ == count_) return false;
         if (at_ == filled_) fill();
@@ -68,27 +55,19 @@ public:
 private:
     void fill() {
         const std::size_t want = std::min(buffer_.size(), count_ - taken_);
-        const off_t offset = static_cast<off_t>(taken_ * sizeof(Record));
-        std::size_t got = 0;
-        while (got < want * sizeof(Record)) {
-            const ssize_t n = ::pread(fd_, reinterpret_cast<char*>(buffer_.data()) + got, want * sizeof(Record) - got,
-                                      offset + static_cast<off_t>(got));
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) throw spool_error("cannot read it back");
-            got += static_cast<std::size_t>(n);
-        }
+        file_.read(buffer_.data(), want * sizeof(Record), taken_ * sizeof(Record));
         at_ = 0;
         filled_ = want;
     }
 
-    int fd_;
+    const UnnamedFile& file_;
     std::size_t count_, taken_ = 0, at_ = 0, filled_ = 0;
     std::array<Record, 256> buffer_;
 };
 
 class BlockReader : public BlockPuller {
 public:
-    BlockReader(int fd, std::size_t count) : records_(fd, count) {}
+    BlockReader(const UnnamedFile& file, std::size_t count) : records_(file, count) {}
     bool next(Block& block) override { return records_.next(block); }
 
 private:
@@ -98,8 +77,8 @@ private:
 // The moving blocks' ends after the start, as moving_points() (plan_run.cpp) picks them.
 class PointReader : public PointSource {
 public:
-    PointReader(int fd, const ProgramSpool& spool)
-        : records_(fd, spool.blocks()), size_(spool.points()), scale_(spool.scale()), last_(spool.first_point()) {}
+    PointReader(const UnnamedFile& file, const ProgramSpool& spool)
+        : records_(file, spool.blocks()), size_(spool.points()), scale_(spool.scale()), last_(spool.first_point()) {}
     std::size_t size() const override { return size_; }
     double scale() const override { return scale_; }
     AxisVector next() override {
@@ -122,25 +101,20 @@ private:
 
 }  // namespace
 
-ProgramSpool::ProgramSpool(const AxisVector& start) : start_(start), last_(start) {
+ProgramSpool::ProgramSpool(const AxisVector& start) : file_("the program"), start_(start), last_(start) {
     scale_ = std::max(scale_, start.cwiseAbs().maxCoeff());
-    std::string name = (std::filesystem::temp_directory_path() / "firtp-program-XXXXXX").string();
-    const int fd = ::mkstemp(name.data());
-    if (fd < 0) throw spool_error("cannot create it");
-    ::unlink(name.c_str());  // unnamed from now on: nothing is left behind
-    file_ = ::fdopen(fd, "w+b");
-    if (file_ == nullptr) {
-        ::close(fd);
-        throw spool_error("cannot open it");
-    }
 }
-
-ProgramSpool::~ProgramSpool() { std::fclose(file_); }
 
 void ProgramSpool::block(const Block& block) {
     const Record r = record_of(block);
     // Called from within the interpreter, which must not see an exception: close() reports it.
-    if (std::fwrite(&r, sizeof r, 1, file_) != 1 && write_errno_ == 0) write_errno_ = errno != 0 ? errno : EIO;
+    if (failed_) return;
+    try {
+        file_.append(&r, sizeof r);
+    } catch (const std::exception&) {
+        failed_ = std::current_exception();
+        return;
+    }
     ++blocks_;
     const double length = (block.target - last_).norm();
     if (length < min_block_length) return;  // skipped by the planner too
@@ -151,19 +125,16 @@ void ProgramSpool::block(const Block& block) {
 }
 
 void ProgramSpool::close() {
-    if (std::fflush(file_) != 0 && write_errno_ == 0) write_errno_ = errno != 0 ? errno : EIO;
-    if (write_errno_ != 0) {
-        errno = write_errno_;
-        throw spool_error("cannot write it");
-    }
+    if (failed_) std::rethrow_exception(failed_);
+    file_.flush();
 }
 
 std::unique_ptr<BlockPuller> ProgramSpool::read_blocks() const {
-    return std::make_unique<BlockReader>(::fileno(file_), blocks_);
+    return std::make_unique<BlockReader>(file_, blocks_);
 }
 
 std::unique_ptr<PointSource> ProgramSpool::read_points() const {
-    return std::make_unique<PointReader>(::fileno(file_), *this);
+    return std::make_unique<PointReader>(file_, *this);
 }
 
 }  // namespace firtp::cli

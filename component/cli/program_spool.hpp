@@ -6,12 +6,14 @@
 // output, and the interpreter runs the program once.
 #pragma once
 
+#include "record_file.hpp"
+
 #include <firtp/gcode.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
 
 #include <cstddef>
-#include <cstdio>
+#include <exception>
 #include <memory>
 #include <vector>
 
@@ -20,9 +22,6 @@ namespace firtp::cli {
 class ProgramSpool : public ProgramSink {
 public:
     explicit ProgramSpool(const AxisVector& start);  // throws std::runtime_error: no temporary file
-    ~ProgramSpool() override;
-    ProgramSpool(const ProgramSpool&) = delete;
-    ProgramSpool& operator=(const ProgramSpool&) = delete;
 
     void block(const Block& block) override;
     void event(const ProgramEvent& event) override { events_.push_back(event); }
@@ -44,8 +43,8 @@ public:
     std::unique_ptr<PointSource> read_points() const;
 
 private:
-    std::FILE* file_ = nullptr;
-    int write_errno_ = 0;  // the first write that failed
+    UnnamedFile file_;
+    std::exception_ptr failed_;  // the first write that failed
     AxisVector start_, last_;
     std::size_t blocks_ = 0, points_ = 1;
     double scale_ = 1.0, feed_time_ = 0.0;

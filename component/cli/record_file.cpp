@@ -15,13 +15,16 @@ namespace firtp::cli {
 namespace {
 
 std::runtime_error file_error(const char* what, const char* doing, int error) {
-    return std::runtime_error(cat("the temporary file of ", what, ": ", doing, ": ", std::strerror(error)));
+    return std::runtime_error(cat("the temporary file of ", what, " (in TMPDIR, else /tmp): ", doing, ": ", std::strerror(error)));
 }
 
 }  // namespace
 
 UnnamedFile::UnnamedFile(const char* what) : what_(what) {
-    std::string name = (std::filesystem::temp_directory_path() / "firtp-XXXXXX").string();
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+    if (ec) throw file_error(what_, "no temporary directory", ec.value());
+    std::string name = (dir / "firtp-XXXXXX").string();
     fd_ = ::mkstemp(name.data());
     if (fd_ < 0) throw file_error(what_, "cannot create it", errno);
     ::unlink(name.c_str());  // unnamed from now on: nothing is left behind

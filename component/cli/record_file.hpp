@@ -9,7 +9,8 @@
 
 namespace firtp::cli {
 
-// The file itself: create, append, read at an offset. Throws std::runtime_error naming `what`.
+// The file itself: create, append (buffered), read at an offset (after flush()). Throws
+// std::runtime_error naming `what`.
 class UnnamedFile {
 public:
     explicit UnnamedFile(const char* what);
