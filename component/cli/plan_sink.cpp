@@ -3,7 +3,7 @@
 namespace firtp::cli {
 
 PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples)
-    : run_(run), progress_(progress), keep_(keep_samples) {
+    : run_(run), progress_(progress), keep_(keep_samples), reported_before_(run.corners.size()) {
     if (csv) csv_.emplace(*csv);
     run.corners.clear_errors();
     auto on_corner = [this](std::size_t i, double e) { corner_measured(i, e); };
@@ -35,6 +35,7 @@ void PlanSink::corner(const CornerReport& report) {
 
 void PlanSink::corner_measured(std::size_t index, double error) {
     run_.corners.add_error(error);
+    if (index < reported_before_) return plot_.corner_error(index, error, run_.corners[index]);
     if (reports_.empty()) return errors_.push_back(error);
     plot_.corner_error(index, error, reports_.front());
     reports_.pop_front();
