@@ -37,8 +37,8 @@ json axis_name(int axis) {
 }
 
 json corner_json(const PlanRun& run, std::size_t i) {
-    const CornerReport& c = run.trajectory.corners[i];
-    const auto& measured = run.corner_errors[i];
+    const CornerReport& c = run.corners[i];
+    const auto& measured = run.corners.error(i);
     json corner = {{"line", c.line},
                    {"point", xyz(c.point)},
                    {"beta_deg", c.beta * 180.0 / std::numbers::pi},
@@ -59,7 +59,7 @@ json corner_json(const PlanRun& run, std::size_t i) {
 
 json corners_json(const PlanRun& run) {
     json corners = json::array();
-    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) corners.push_back(corner_json(run, i));
+    for (std::size_t i = 0; i < run.corners.size(); ++i) corners.push_back(corner_json(run, i));
     return corners;
 }
 
@@ -103,13 +103,13 @@ void write_json_report(std::ostream& out, const PlanRun& run, const std::string&
     const std::string text = json_report(run, program_name, false).dump(2);
     const std::string empty = "\"corners\": []";
     const std::size_t at = text.find(empty);
-    if (at == std::string::npos || run.trajectory.corners.empty()) {
+    if (at == std::string::npos || run.corners.empty()) {
         out << text << "\n";
         return;
     }
     // Each corner as dump(2) writes it two levels down: every line indented by four spaces.
     out << text.substr(0, at) << "\"corners\": [\n";
-    for (std::size_t i = 0; i < run.trajectory.corners.size(); ++i) {
+    for (std::size_t i = 0; i < run.corners.size(); ++i) {
         const std::string corner = corner_json(run, i).dump(2);
         std::string indented = i ? ",\n    " : "    ";
         for (char ch : corner) {

@@ -32,14 +32,14 @@ std::vector<std::string> measured_violations(const PlanRun& run) {
     if (run.parameters.tolerance_meaning == ToleranceMeaning::contour) {
         double widest = 0.0;  // the path within the largest tolerance at least
         bool bounded = false;
-        for (const CornerReport& c : run.trajectory.corners)
+        for (const CornerReport& c : run.corners)
             if (std::isfinite(c.epsilon)) widest = std::max(widest, c.epsilon), bounded = true;
         if (bounded && m.max_contour_error > widest * (1.0 + rounding) + 1e-9)
             out.push_back(cat("contour error ", number_text(m.max_contour_error), " mm above the tolerance ", number_text(widest), " mm"));
     } else {
-        for (std::size_t i = 0; i < run.trajectory.corners.size() && i < run.corner_errors.size(); ++i) {
-            const CornerReport& c = run.trajectory.corners[i];
-            const auto& error = run.corner_errors[i];
+        for (std::size_t i = 0; i < run.corners.size(); ++i) {
+            const CornerReport& c = run.corners[i];
+            const auto& error = run.corners.error(i);
             if (error && std::isfinite(c.epsilon) && *error > c.epsilon * (1.0 + rounding) + 1e-9)
                 out.push_back(cat("corner at line ", std::to_string(c.line), ": error ", number_text(*error),
                                   " mm above its tolerance ", number_text(c.epsilon), " mm"));

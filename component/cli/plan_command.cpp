@@ -24,7 +24,7 @@ int plan_command(std::span<const std::string> args) {
     // Before the planning work: a missing gnuplot fails at once.
     const std::optional<std::filesystem::path> gnuplot =
         options.plot || options.report ? std::optional(find_gnuplot()) : std::nullopt;
-    PlanRun run = prepare_plan(options);
+    PlanRun run = prepare_spooled_plan(options);
     PlanOutputs outputs(options);
     std::vector<std::filesystem::path> written;
     {

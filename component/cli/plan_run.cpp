@@ -50,14 +50,35 @@ PlanRun prepare_plan(const PlanOptions& options) {
     run.machine = load_machine_config(options);
     run.parameters = run.machine.planner_parameters();
     run.program = read_gcode(options.program, run.machine);
+    run.blocks = run.program.blocks.size();
     run.points = moving_points(run.program, run.feed_time);
+    run.trajectory.start = run.program.start;
+    return run;
+}
+
+PlanRun prepare_spooled_plan(const PlanOptions& options) {
+    PlanRun run;
+    run.machine = load_machine_config(options);
+    run.parameters = run.machine.planner_parameters();
+    run.program.file = options.program.string();
+    auto spool = std::make_shared<ProgramSpool>(run.program.start);
+    read_gcode(options.program, run.machine, run.program.start, *spool);
+    spool->close();
+    run.program.events = std::move(spool->events());
+    run.blocks = spool->blocks();
+    run.feed_time = spool->feed_time();
+    run.points = PathPoints(std::shared_ptr<const ProgramSpool>(spool));
+    run.corners.spool();
+    run.spool = std::move(spool);
     run.trajectory.start = run.program.start;
     return run;
 }
 
 void plan_program(PlanRun& run, TrajectorySink& sink) {
     try {
-        const StreamedTrajectory streamed = plan_trajectory(run.parameters, run.program.start, run.program.blocks, sink);
+        const StreamedTrajectory streamed =
+            run.spool ? plan_trajectory(run.parameters, run.program.start, *run.spool->read_blocks(), sink)
+                      : plan_trajectory(run.parameters, run.program.start, run.program.blocks, sink);
         run.trajectory.cycle_time = streamed.cycle_time;
         run.trajectory.stats = streamed.stats;
         run.sample_count = streamed.samples;
@@ -70,10 +91,11 @@ PlanRun run_plan(const PlanOptions& options) {
     PlanRun run = prepare_plan(options);
     struct Keep : TrajectorySink {
         Trajectory& t;
-        explicit Keep(Trajectory& into) : t(into) {}
         void sample(const AxisState& state) override { t.samples.push_back(state); }
-        void corner(const CornerReport& report) override { t.corners.push_back(report); }
-    } keep(run.trajectory);
+        CornerList& corners;
+        Keep(Trajectory& into, CornerList& c) : t(into), corners(c) {}
+        void corner(const CornerReport& report) override { corners.push_back(report); }
+    } keep(run.trajectory, run.corners);
     plan_program(run, keep);
     measure_plan(run);
     return run;
@@ -81,7 +103,7 @@ PlanRun run_plan(const PlanOptions& options) {
 
 void measure_plan(PlanRun& run) {
     run.sample_count = run.trajectory.samples.size();
-    take_measurement(run, measure(run.trajectory.samples, run.points, run.parameters.period));
+    take_measurement(run, measure(run.trajectory.samples, run.points.kept(), run.parameters.period));
 }
 
 void take_measurement(PlanRun& run, Measured measured) {
@@ -89,11 +111,11 @@ void take_measurement(PlanRun& run, Measured measured) {
     if (run.sample_count > 0) run.trajectory.cycle_time = run.measured.cycle_time;
 
     // Interior points and corners are the same junctions, in order, when both skipped the same blocks.
-    const auto& corners = run.trajectory.corners;
-    const bool matched = run.measured.corner_errors.size() == corners.size();
-    run.corner_errors.clear();
-    for (std::size_t i = 0; i < corners.size(); ++i)
-        run.corner_errors.push_back(matched ? std::optional<double>(run.measured.corner_errors[i]) : std::nullopt);
+    // A streamed measurement gave its errors to run.corners as it went, a batch one has them here.
+    auto& corners = run.corners;
+    if (corners.errors_count() == 0)
+        for (const double e : run.measured.corner_errors) corners.add_error(e);
+    corners.pair_errors();
 
     run.closed_form_cycle_time = 0.0;
     if (run.parameters.fixed_chain && run.points.size() > 1) {

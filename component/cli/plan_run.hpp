@@ -1,13 +1,17 @@
 // One planned program: machine, blocks, sampled trajectory and what was measured on it.
 #pragma once
 
+#include "corner_list.hpp"
+#include "path_points.hpp"
 #include "plan_options.hpp"
+#include "program_spool.hpp"
 
 #include <firtp/gcode.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -16,12 +20,14 @@ namespace firtp::cli {
 struct PlanRun {
     MachineConfig machine;
     PlannerParameters parameters;
-    Program program;
+    Program program;                 // its blocks only when not spooled
+    std::shared_ptr<ProgramSpool> spool;  // the blocks, read back as the planner takes them (plan)
+    std::size_t blocks = 0;          // blocks read, moving or not
     Trajectory trajectory;           // samples only where kept (--report, run's reference)
     std::size_t sample_count = 0;    // samples planned (or received), kept or not
-    std::vector<AxisVector> points;  // start, then the end of every block that moves
+    PathPoints points;               // start, then the end of every block that moves
     Measured measured;
-    std::vector<std::optional<double>> corner_errors;  // measured, one per trajectory.corners entry
+    CornerList corners;              // the planner's reports and their measured errors
     double closed_form_cycle_time = 0.0;  // the paper's fixed chain: sum(Tv) + sum(Td - Tk) + Td
     double feed_time = 0.0;               // sum(Tv): every block at its programmed feed, no corners
 };
@@ -32,8 +38,10 @@ MachineConfig load_machine_config(const PlanOptions& options);
 // Loads the machine (INI or built-in, then overrides) and reads the program: everything but the
 // plan. Throws UsageError for bad flag values, ConfigError / GcodeError otherwise.
 PlanRun prepare_plan(const PlanOptions& options);
+// The same with the blocks in a ProgramSpool, not in memory: for a plan that streams.
+PlanRun prepare_spooled_plan(const PlanOptions& options);
 
-// Plans run.program, handing every sample and corner report to `sink` as it is made; sets
+// Plans run.program (or run.spool), handing every sample and corner report to `sink` as it is made; sets
 // run.trajectory's cycle time and stats and run.sample_count. Throws std::runtime_error naming the
 // file and line of an invalid block.
 void plan_program(PlanRun& run, TrajectorySink& sink);

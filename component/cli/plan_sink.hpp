@@ -11,6 +11,8 @@
 #include <firtp/measure.hpp>
 #include <firtp/trajectory.hpp>
 
+#include <deque>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -20,7 +22,8 @@ namespace firtp::cli {
 
 class PlanSink : public TrajectorySink {
 public:
-    // run: prepared (points known); its corner reports arrive through corner(). csv, progress: may be null.
+    // run: prepared (points known); its corner reports arrive through corner(), or were made
+    // before (run measures the received samples against the reference plan's). csv, progress: may be null.
     PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples);
 
     void sample(const AxisState& state) override;
@@ -38,9 +41,12 @@ private:
     std::optional<CsvWriter> csv_;
     ProgressLine* progress_;
     bool keep_;
-    MeasureStream measure_;
+    std::unique_ptr<PointSource> points_;  // the spool's, when spooled
+    std::optional<MeasureStream> measure_;
     PlotSamples plot_;
-    std::vector<std::pair<std::size_t, double>> pending_;  // measured before their report came
+    std::size_t reported_before_;       // corners of a plan made before (run: the reference's)
+    std::deque<CornerReport> reports_;  // reported, not yet measured
+    std::deque<double> errors_;         // measured before their report came
 };
 
 // The plot's samples of a run that kept them.

@@ -41,10 +41,10 @@ std::string reference_time_text(const PlanRun& run) {
 }
 
 std::string slowest_junction_text(const PlanRun& run) {
-    const CornerReport* slowest = nullptr;
-    for (const CornerReport& c : run.trajectory.corners)
+    std::optional<CornerReport> slowest;
+    for (const CornerReport& c : run.corners)
         if (!c.exact_stop && (!slowest || std::max(c.speed_in, c.speed_out) < std::max(slowest->speed_in, slowest->speed_out)))
-            slowest = &c;
+            slowest = c;
     if (!slowest) return "none";
     return cat(fixed_text(std::max(slowest->speed_in, slowest->speed_out), 1), " mm/s at line ", std::to_string(slowest->line),
                " (", bound_text(*slowest), ")");

@@ -32,7 +32,9 @@ void row(Script& s, const Eigen::Vector2d& xy) {
 void data_blocks(Script& s, const PlanRun& run, const PlotSamples& plot) {
     const std::size_t step = std::max<std::size_t>(1, (run.points.size() + max_program_rows - 1) / max_program_rows);
     s << "$program << EOD\n";
-    for (std::size_t i = 0; i < run.points.size(); i += step) s << run.points[i][0] << " " << run.points[i][1] << "\n";
+    run.points.for_each([&](std::size_t i, const AxisVector& p) {
+        if (i % step == 0) s << p[0] << " " << p[1] << "\n";
+    });
     if ((run.points.size() - 1) % step != 0) s << run.points.back()[0] << " " << run.points.back()[1] << "\n";
     s << "EOD\n$path << EOD\n";
     for (const auto& r : plot.path.rows()) s << r[0] << " " << r[1] << "\n";
@@ -48,8 +50,8 @@ void data_blocks(Script& s, const PlanRun& run, const PlotSamples& plot) {
 }
 
 std::string zoom_title(const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
-    const CornerReport& c = run.trajectory.corners[zoom.corner];
-    const auto& measured = run.corner_errors[zoom.corner];
+    const CornerReport& c = run.corners[zoom.corner];
+    const auto& measured = run.corners.error(zoom.corner);
     std::string title = cat("#", std::to_string(z + 1), " line ", std::to_string(c.line), ", ",
                             fixed_text(c.beta * 180.0 / std::numbers::pi, 1), " deg, Tk ", fixed_text(c.Tk * 1e3, 2),
                             " ms\nerror ", measured ? fixed_text(*measured, 4) : std::string("?"));
@@ -66,7 +68,7 @@ void overview_ranges(Script& s, const PlanRun& run, const PlotSamples& plot) {
         low = low.cwiseMin(p.head<2>());
         high = high.cwiseMax(p.head<2>());
     };
-    for (const AxisVector& p : run.points) grow(p);
+    run.points.for_each([&](std::size_t, const AxisVector& p) { grow(p); });
     if (plot.any) {
         low = low.cwiseMin(plot.low);
         high = high.cwiseMax(plot.high);
@@ -83,7 +85,7 @@ void overview_plot(Script& s, const PlanRun& run, const PlotSamples& plot) {
          "set title 'XY path' noenhanced\nset xlabel 'x [mm]'\nset ylabel 'y [mm]'\nset key below horizontal\n";
     overview_ranges(s, run, plot);
     for (std::size_t z = 0; z < zooms.size(); ++z) {
-        const AxisVector& c = run.trajectory.corners[zooms[z].corner].point;
+        const AxisVector& c = run.corners[zooms[z].corner].point;
         s << "set label " << (z + 1) << " '#" << (z + 1) << "' at " << c[0] << "," << c[1]
           << " offset 0.8,0.8 front tc 'dark-red'\n";
     }
@@ -94,7 +96,7 @@ void overview_plot(Script& s, const PlanRun& run, const PlotSamples& plot) {
 }
 
 void zoom_plot(Script& s, const PlanRun& run, std::size_t z, const ZoomSamples& zoom) {
-    const CornerReport& c = run.trajectory.corners[zoom.corner];
+    const CornerReport& c = run.corners[zoom.corner];
     const double h = zoom.half_width;
     const double x = 0.5 + 0.25 * static_cast<double>(z % 2);
     const double y = 0.695 - 0.255 * static_cast<double>(z / 2);

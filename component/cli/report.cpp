@@ -53,17 +53,17 @@ std::string modes_text(const MachineConfig& machine) {
 
 void summary_table(std::ostream& md, const PlanRun& run, const std::string& name) {
     std::size_t exact = 0;
-    for (const CornerReport& c : run.trajectory.corners) exact += c.exact_stop ? 1 : 0;
+    for (const CornerReport& c : run.corners) exact += c.exact_stop ? 1 : 0;
     double worst = 0.0;
     std::size_t over = 0;
-    for (std::size_t i = 0; i < run.corner_errors.size(); ++i)
-        if (run.corner_errors[i]) {
-            worst = std::max(worst, *run.corner_errors[i]);
-            over += *run.corner_errors[i] > run.trajectory.corners[i].epsilon ? 1 : 0;
+    for (std::size_t i = 0; i < run.corners.size(); ++i)
+        if (run.corners.error(i)) {
+            worst = std::max(worst, *run.corners.error(i));
+            over += *run.corners.error(i) > run.corners[i].epsilon ? 1 : 0;
         }
     const Measured& m = run.measured;
     md << "| | |\n|---|---|\n"
-       << "| program | `" << name << "`: " << run.points.size() - 1 << " blocks that move, " << run.trajectory.corners.size()
+       << "| program | `" << name << "`: " << run.points.size() - 1 << " blocks that move, " << run.corners.size()
        << " corners (" << exact << " exact stop) |\n"
        << "| machine | " << machine_text(run) << " |\n"
        << "| structural modes | " << modes_text(run.machine) << " |\n"
@@ -97,7 +97,7 @@ void kinematics_table(std::ostream& md, const PlanRun& run) {
 }
 
 void corner_table(std::ostream& md, const PlanRun& run) {
-    const auto& corners = run.trajectory.corners;
+    const auto& corners = run.corners;
     if (corners.empty()) {
         md << "No corners.\n";
         return;
@@ -118,7 +118,7 @@ void corner_table(std::ostream& md, const PlanRun& run) {
         else md << fixed_text(c.speed_in, 1) << " / " << fixed_text(c.speed_out, 1) << " | " << bound_text(c);
         md << " | " << (std::isfinite(c.epsilon) ? fixed_text(c.epsilon, 4) : std::string("none")) << " | "
            << fixed_text(c.predicted_error, 4) << " | "
-           << (run.corner_errors[i] ? fixed_text(*run.corner_errors[i], 4) : std::string("?")) << " |\n";
+           << (run.corners.error(i) ? fixed_text(*run.corners.error(i), 4) : std::string("?")) << " |\n";
     }
     if (corners.size() > max_corner_rows)
         md << "\n" << corners.size() - max_corner_rows << " more corners: see `firtp plan --json`.\n";

@@ -13,14 +13,14 @@ namespace {
 
 // The largest measured corner error, and the corners above their tolerance.
 std::string corner_line(const PlanRun& run) {
-    const auto& corners = run.trajectory.corners;
+    const auto& corners = run.corners;
     std::size_t worst = corners.size();
     std::size_t over = 0;
     double worst_error = -1.0;
     double worst_excess = 0.0;
     for (std::size_t i = 0; i < corners.size(); ++i) {
-        if (!run.corner_errors[i]) continue;
-        const double error = *run.corner_errors[i];
+        if (!run.corners.error(i)) continue;
+        const double error = *run.corners.error(i);
         if (error > worst_error) worst = i, worst_error = error;
         if (error > corners[i].epsilon) ++over, worst_excess = std::max(worst_excess, error - corners[i].epsilon);
     }
@@ -41,12 +41,12 @@ std::string axis_max(const AxisVector& v, int decimals) {
 
 // One line per kind of non-motion event, in the order of EventKind (the end, M2/M30, which every
 // program has, only in the JSON).
-void print_events(std::ostream& out, const Program& program) {
+void print_events(std::ostream& out, const Program& program, std::size_t blocks) {
     std::array<std::size_t, event_kinds> count{};
     double dwell = 0.0, after_last = 0.0;  // a dwell after the last move has no block to delay
     for (const ProgramEvent& e : program.events) {
         ++count[static_cast<std::size_t>(e.kind)];
-        if (e.kind == EventKind::dwell) (e.before_block < program.blocks.size() ? dwell : after_last) += e.value;
+        if (e.kind == EventKind::dwell) (e.before_block < blocks ? dwell : after_last) += e.value;
     }
     for (std::size_t k = 0; k < count.size(); ++k) {
         const auto kind = static_cast<EventKind>(k);
@@ -66,11 +66,11 @@ void print_events(std::ostream& out, const Program& program) {
 void print_summary(std::ostream& out, const PlanRun& run, const std::string& program_name,
                    const std::vector<std::filesystem::path>& written) {
     std::size_t exact = 0;
-    for (const CornerReport& c : run.trajectory.corners) exact += c.exact_stop ? 1 : 0;
+    for (const CornerReport& c : run.corners) exact += c.exact_stop ? 1 : 0;
     const Measured& m = run.measured;
     out << "program      " << program_name << "\n"
         << "machine      " << machine_text(run) << "\n"
-        << "blocks       " << run.points.size() - 1 << " moving, " << run.trajectory.corners.size() << " corners ("
+        << "blocks       " << run.points.size() - 1 << " moving, " << run.corners.size() << " corners ("
         << exact << " exact stop)\n"
         << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (" << reference_time_text(run) << ")\n"
         << "corners      " << corner_line(run) << "\n"
@@ -80,7 +80,7 @@ void print_summary(std::ostream& out, const PlanRun& run, const std::string& pro
         << " mm/s\n"
         << "axes         max acceleration " << axis_max(m.max_acceleration, 0) << " mm/s^2, jerk "
         << axis_max(m.max_jerk, 0) << " mm/s^3\n";
-    print_events(out, run.program);
+    print_events(out, run.program, run.blocks);
     for (const auto& path : written) out << "wrote        " << path.string() << "\n";
 }
 

@@ -2,6 +2,7 @@
 //
 //   firtp_plan_memory --firtp PATH [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]
 //   firtp_plan_memory --firtp PATH --compare N1,N2 [--slow-compare K] --max-ratio R [...]
+//   firtp_plan_memory --firtp PATH --sizes N1,N2,... [--max-bytes-per-block B]
 //
 // The program is CAM finishing output: a chorded Archimedean spiral (R 20 mm out, 0.4 mm apart)
 // whose chords run log-uniformly from 2 µm to 0.5 mm, now and then a zig-zag of 0.05-0.5 mm steps
@@ -14,14 +15,17 @@
 // --compare N1,N2 plans N1 and then N2 blocks (--slow-compare K: N blocks at F3000 and again K
 // times slower) and fails (exit 1) when the larger run's peak RSS is above R times the smaller's
 // (--max-ratio R) or, with --compare, grew by more than B bytes a block (--max-bytes-per-block B).
-// The samples are streamed, so the duration costs nothing; the program itself is still held whole
-// (the G-code reader's blocks, the points, the corner reports: a few hundred bytes a block).
+// --sizes plans each size in turn and prints a table: peak RSS and its growth in bytes a block from
+// the size before (fails when the growth from the first to the last size is above B).
+// The samples are streamed, so the duration costs nothing; the blocks and corner reports go to
+// temporary files, so the program's length costs (almost) nothing either.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <spawn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +51,7 @@ struct Options {
     bool outputs = true;
     std::optional<std::string> keep;
     std::optional<std::pair<long, long>> compare;
+    std::vector<long> sizes;
     double slow_compare = 0.0;
     double max_ratio = 0.0;
     double max_bytes_per_block = 0.0;
@@ -132,12 +137,37 @@ void print(const Result& r, double slow) {
     std::fflush(stdout);
 }
 
+double growth(const Result& a, const Result& b) {
+    return 1024.0 * static_cast<double>(b.peak_kib - a.peak_kib) / static_cast<double>(b.blocks - a.blocks);
+}
+
+// Each size in turn: a Markdown table of peak RSS and its growth a block.
+int sizes(const Options& o, const std::filesystem::path& dir) {
+    std::vector<Result> results;
+    for (const long n : o.sizes) {
+        results.push_back(plan(o, dir, n, 1.0));
+        print(results.back(), 1.0);
+    }
+    std::printf("\n| blocks | peak RSS | growth from the size before | wall | blocks/s |\n|---|---|---|---|---|\n");
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const Result& r = results[i];
+        const std::string grew = i == 0 ? std::string("") : std::to_string(std::lround(growth(results[i - 1], r))) + " B/block";
+        std::printf("| %ld | %.1f MiB | %s | %.1f s | %.0f |\n", r.blocks, static_cast<double>(r.peak_kib) / 1024.0,
+                    grew.c_str(), r.seconds, static_cast<double>(r.blocks) / r.seconds);
+    }
+    const double overall = growth(results.front(), results.back());
+    std::printf("peak RSS growth %.1f bytes per block from %ld to %ld blocks (allowed %.0f)\n", overall,
+                results.front().blocks, results.back().blocks, o.max_bytes_per_block);
+    return o.max_bytes_per_block > 0.0 && overall > o.max_bytes_per_block ? 1 : 0;
+}
+
 int usage(const char* self) {
     std::fprintf(stderr,
                  "usage: %s --firtp PATH [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]\n"
                  "       %s --firtp PATH (--compare N1,N2 | --blocks N --slow-compare K) [--max-ratio R]\n"
-                 "          [--max-bytes-per-block B]\n",
-                 self, self);
+                 "          [--max-bytes-per-block B]\n"
+                 "       %s --firtp PATH --sizes N1,N2,... [--max-bytes-per-block B]\n",
+                 self, self, self);
     return 2;
 }
 
@@ -163,6 +193,14 @@ int main(int argc, char** argv) {
                 const auto comma = v.find(',');
                 if (comma == std::string::npos) return usage(argv[0]);
                 o.compare = {std::stol(v.substr(0, comma)), std::stol(v.substr(comma + 1))};
+            } else if (a == "--sizes") {
+                const std::string v = value();
+                for (std::size_t at = 0; at < v.size();) {
+                    const std::size_t comma = std::min(v.find(',', at), v.size());
+                    o.sizes.push_back(std::stol(v.substr(at, comma - at)));
+                    at = comma + 1;
+                }
+                if (o.sizes.size() < 2) return usage(argv[0]);
             } else if (a == "--slow-compare") o.slow_compare = std::stod(value());
             else if (a == "--max-ratio") o.max_ratio = std::stod(value());
             else if (a == "--max-bytes-per-block") o.max_bytes_per_block = std::stod(value());
@@ -184,7 +222,9 @@ int main(int argc, char** argv) {
             dir = pattern;
         }
         int status = 0;
-        if (o.compare || o.slow_compare > 0.0) {
+        if (!o.sizes.empty()) {
+            status = sizes(o, dir);
+        } else if (o.compare || o.slow_compare > 0.0) {
             const Result a = o.compare ? plan(o, dir, o.compare->first, 1.0) : plan(o, dir, o.blocks, 1.0);
             print(a, 1.0);
             const double slow = o.compare ? 1.0 : o.slow_compare;

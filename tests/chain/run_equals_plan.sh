@@ -23,3 +23,11 @@ check corner90.ngc
 check steps.ngc
 check steps.ngc --tolerance-meaning contour --t1 0.03 --t2 0.011
 check corner90.ngc --ini "$(dirname "$0")/override.ini"
+# The same samples draw the same picture, the corner zooms (paired with the reference plan's
+# corner reports) included.
+if command -v gnuplot > /dev/null; then
+  "$firtp" plan "$examples/diamond.ngc" --ini "$examples/diamond.ini" --plot "$work/plan.png" > /dev/null
+  "$firtp" run "$examples/diamond.ngc" --ini "$examples/diamond.ini" --plot "$work/run.png" > /dev/null
+  cmp "$work/plan.png" "$work/run.png" || { echo "diamond: run's plot differs from plan's"; exit 1; }
+  echo "diamond: run's plot is plan's"
+fi

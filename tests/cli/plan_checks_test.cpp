@@ -11,6 +11,13 @@
 namespace firtp::cli {
 namespace {
 
+// The one corner's measured error.
+void measured_error(PlanRun& run, double error) {
+    run.corners.clear_errors();
+    run.corners.add_error(error);
+    run.corners.pair_errors();
+}
+
 PlanRun clean_run() {
     PlanRun run;
     run.parameters.limits.axes = 2;
@@ -25,8 +32,8 @@ PlanRun clean_run() {
     CornerReport corner;
     corner.line = 7;
     corner.epsilon = 0.01;
-    run.trajectory.corners = {corner};
-    run.corner_errors = {0.01};
+    run.corners.push_back(corner);
+    measured_error(run, 0.01);
     return run;
 }
 
@@ -38,7 +45,7 @@ TEST(PlanChecks, AtTheLimitsAndTheToleranceNothingIsReported) {
 
 TEST(PlanChecks, EachFindingIsNamedAndTheExitStatusSaysSo) {
     PlanRun run = clean_run();
-    run.corner_errors = {0.0125};
+    measured_error(run, 0.0125);
     run.measured.max_velocity[1] = 10.5;
     run.measured.max_jerk[0] = 1200.0;
     run.measured.end_position[0] = 0.001;
@@ -54,7 +61,7 @@ TEST(PlanChecks, EachFindingIsNamedAndTheExitStatusSaysSo) {
 TEST(PlanChecks, WithContourToleranceThePathIsHeldToItNotTheCornerPoints) {
     PlanRun run = clean_run();
     run.parameters.tolerance_meaning = ToleranceMeaning::contour;
-    run.corner_errors = {0.014};          // the corner point may be farther than the tolerance
+    measured_error(run, 0.014);  // the corner point may be farther than the tolerance
     run.measured.max_contour_error = 0.01;
     std::ostringstream err;
     EXPECT_EQ(report_violations(err, run), 0);

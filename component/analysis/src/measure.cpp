@@ -28,31 +28,65 @@ Segment chord(const AxisVector& a, const AxisVector& b) {
     return s;
 }
 
-// Distances closer than this count as equal (rounding on overlapping segments).
-double tie_tolerance(std::span<const AxisVector> points) {
-    double scale = 1.0;
-    for (const AxisVector& p : points) scale = std::max(scale, p.cwiseAbs().maxCoeff());
-    return 1e-10 * scale;
-}
+// The caller's points without repeats (zero-length blocks, as the planner skips them, repeat a
+// point; a copy only where there are any: a long program's points are not held twice).
+class SpanPoints : public PointSource {
+public:
+    explicit SpanPoints(std::span<const AxisVector> points) {
+        const auto distinct = [](const AxisVector& a, const AxisVector& b) { return (b - a).norm() >= min_block_length; };
+        bool repeats = false;
+        for (std::size_t i = 1; i < points.size() && !repeats; ++i) repeats = !distinct(points[i - 1], points[i]);
+        if (repeats) {
+            for (const AxisVector& p : points)
+                if (own_.empty() || distinct(own_.back(), p)) own_.push_back(p);
+            points_ = own_;
+        } else {
+            points_ = points;
+        }
+        for (const AxisVector& p : points_) scale_ = std::max(scale_, p.cwiseAbs().maxCoeff());
+    }
+    std::size_t size() const override { return points_.size(); }
+    double scale() const override { return scale_; }
+    AxisVector next() override { return points_[next_++]; }
+
+private:
+    std::vector<AxisVector> own_;
+    std::span<const AxisVector> points_;
+    double scale_ = 1.0;
+    std::size_t next_ = 0;
+};
 
 }  // namespace
 
 MeasureStream::MeasureStream(std::span<const AxisVector> points, double period, CornerCallback on_corner)
+    : own_(std::make_unique<SpanPoints>(points)), period_(period), on_corner_(std::move(on_corner)) {
+    start(*own_);
+}
+
+MeasureStream::MeasureStream(PointSource& points, double period, CornerCallback on_corner)
     : period_(period), on_corner_(std::move(on_corner)) {
-    // Zero-length blocks (as the planner skips them) repeat a point; drop the repeats (a copy only
-    // where there are any: a long program's points are not held twice).
-    const auto distinct = [](const AxisVector& a, const AxisVector& b) { return (b - a).norm() >= min_block_length; };
-    bool repeats = false;
-    for (std::size_t i = 1; i < points.size() && !repeats; ++i) repeats = !distinct(points[i - 1], points[i]);
-    if (repeats) {
-        for (const AxisVector& p : points)
-            if (own_.empty() || distinct(own_.back(), p)) own_.push_back(p);
-        points_ = own_;
-    } else {
-        points_ = points;
-    }
-    if (points_.size() >= 2) last_ = points_.size() - 2;
-    tie_ = tie_tolerance(points_);
+    start(points);
+}
+
+void MeasureStream::start(PointSource& points) {
+    source_ = &points;
+    size_ = points.size();
+    if (size_ >= 2) last_ = size_ - 2;
+    tie_ = 1e-10 * points.scale();  // distances closer than this count as equal (rounding on overlaps)
+}
+
+MeasureStream::~MeasureStream() = default;
+
+const AxisVector& MeasureStream::point(std::size_t j) {
+    while (points_base_ + points_.size() <= j) points_.push_back(source_->next());
+    return points_[j - points_base_];
+}
+
+// No later step looks below the older tracked sample's segment, the segments kept or an open corner.
+void MeasureStream::release() {
+    std::size_t low = std::min({tracked_[0], tracked_[1], window_base_});
+    if (!open_.empty()) low = std::min(low, open_.front().first);
+    for (; points_base_ < low && !points_.empty(); ++points_base_) points_.pop_front();
 }
 
 // Segments are made as the tracking reaches them and dropped behind it (it never goes back).
@@ -60,8 +94,8 @@ const Segment& MeasureStream::segment(std::size_t k) {
     while (window_base_ + window_.size() <= k) {
         const std::size_t j = window_base_ + window_.size();
         Segment s;
-        s.start = points_[j];
-        s.delta = points_[j + 1] - points_[j];
+        s.start = point(j);
+        s.delta = point(j + 1) - s.start;
         s.length2 = s.delta.squaredNorm();
         s.unit = s.length2 > 0.0 ? AxisVector(s.delta / std::sqrt(s.length2)) : AxisVector::Zero();
         window_.push_back(s);
@@ -133,12 +167,13 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
 
 // Distance of interior point j from the chord between samples c and c+1 (the drives go straight
 // from sample to sample).
-double MeasureStream::chord_distance(std::size_t c, std::size_t j) const {
-    return distance(points_[j], firtp::chord(recent(c), recent(c + 1)));
+double MeasureStream::chord_distance(std::size_t c, std::size_t j) {
+    return distance(point(j), firtp::chord(recent(c), recent(c + 1)));
 }
 
 void MeasureStream::close_corner(std::size_t j, double error) {
-    m_.corner_errors.push_back(error);  // corner j is entry j - 1: corners close in order
+    if (keep_errors_) m_.corner_errors.push_back(error);  // corner j is entry j - 1: corners close in order
+    m_.max_corner_error = std::max(m_.max_corner_error, error);
     if (on_corner_) on_corner_(j - 1, error);
 }
 
@@ -168,7 +203,7 @@ void MeasureStream::chord(std::size_t c, bool has_next) {
         if (c > 0) best = std::min(best, chord_distance(c - 1, j));
         best = std::min(best, chord_distance(c, j));
         if (has_next) best = std::min(best, chord_distance(c + 1, j));
-        else best = std::min(best, (recent(c + 1) - points_[j]).norm());
+        else best = std::min(best, (recent(c + 1) - point(j)).norm());
         close_corner(j, best);
     }
     close_open_below(s1);
@@ -181,11 +216,12 @@ void MeasureStream::add(const AxisState& sample) {
     m_.cycle_time = sample.time;
     m_.end_position = sample.position;
     if (period_ > 0.0) derivatives(n);
-    if (points_.size() == 1) lone_point_ = std::max(lone_point_, (sample.position - points_[0]).norm());
-    if (points_.size() < 2 || n == 0) return;
+    if (size_ == 1) lone_point_ = std::max(lone_point_, (sample.position - point(0)).norm());
+    if (size_ < 2 || n == 0) return;
     const std::size_t i = n - 1;  // its direction of motion is known now
     track(i, recent(n) - recent(i > 0 ? i - 1 : 0));
     if (i >= 1) chord(i - 1, true);
+    release();
 }
 
 Measured MeasureStream::finish() {
@@ -201,18 +237,17 @@ Measured MeasureStream::finish() {
         m_.max_acceleration /= period_ * period_;
         m_.max_jerk /= period_ * period_ * period_;
     }
-    if (points_.size() == 1) m_.max_contour_error = lone_point_;  // a program that never moves
-    if (points_.size() < 2) return std::move(m_);
+    if (size_ == 1) m_.max_contour_error = lone_point_;  // a program that never moves
+    if (size_ < 2) return std::move(m_);
 
     track(n - 1, recent(n - 1) - recent(n - 2));
     chord(n - 2, false);
     const AxisVector& end = recent(n - 1);
-    for (auto& [j, best] : open_) best = std::min(best, (end - points_[j]).norm());
+    for (auto& [j, best] : open_) best = std::min(best, (end - point(j)).norm());
     close_open_below(last_ + 1);
     for (std::size_t j = tracked_[(n - 1) % 2] + 2; j <= last_; ++j)  // never reached: the last chord and the end
-        close_corner(j, std::min(std::min(inf, chord_distance(n - 2, j)), (end - points_[j]).norm()));
+        close_corner(j, std::min(std::min(inf, chord_distance(n - 2, j)), (end - point(j)).norm()));
     m_.max_contour_error = stray_;
-    for (double e : m_.corner_errors) m_.max_corner_error = std::max(m_.max_corner_error, e);
     return std::move(m_);
 }
 

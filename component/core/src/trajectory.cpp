@@ -8,20 +8,21 @@
 namespace firtp {
 
 StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
-                                   std::span<const Block> blocks, TrajectorySink& sink) {
+                                   BlockPuller& blocks, TrajectorySink& sink) {
     Planner planner(parameters, start);
     StreamedTrajectory out;
     PlannerInput input;
     PlannerOutput period;
-    std::size_t next = 0;
-    for (Result motion = Result::working; motion == Result::working || next < blocks.size();) {
-        for (; next < blocks.size(); ++next) {
-            const Result result = planner.add(blocks[next]);
+    Block block;
+    bool pending = blocks.next(block);  // taken from the source, not yet by the planner
+    for (Result motion = Result::working; motion == Result::working || pending;) {
+        for (; pending; pending = blocks.next(block)) {
+            const Result result = planner.add(block);
             if (result == Result::queue_full) break;
             if (refused(result))
-                throw std::invalid_argument("line " + std::to_string(blocks[next].line) + ": " + planner.refusal());
+                throw std::invalid_argument("line " + std::to_string(block.line) + ": " + planner.refusal());
         }
-        input.end_of_program = next == blocks.size();
+        input.end_of_program = !pending;
         motion = planner.update(input, period);
         ++out.samples;
         out.cycle_time = period.state.time;
@@ -30,6 +31,21 @@ StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const Ax
     }
     out.stats = planner.stats();
     return out;
+}
+
+StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
+                                   std::span<const Block> blocks, TrajectorySink& sink) {
+    struct Span : BlockPuller {
+        std::span<const Block> blocks;
+        std::size_t next_index = 0;
+        bool next(Block& block) override {
+            if (next_index == blocks.size()) return false;
+            block = blocks[next_index++];
+            return true;
+        }
+    } source;
+    source.blocks = blocks;
+    return plan_trajectory(parameters, start, source, sink);
 }
 
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,

@@ -29,8 +29,9 @@ void rotate(double& x, double& y, double degrees) {
 
 }  // namespace
 
-CanonRecorder::CanonRecorder(const MachineConfig& machine, Program& program, std::function<Place()> where)
-    : machine_(machine), program_(program), where_(std::move(where)), position_(program.start) {
+CanonRecorder::CanonRecorder(const MachineConfig& machine, const AxisVector& start, ProgramSink& sink,
+                             std::function<Place()> where)
+    : machine_(machine), sink_(sink), where_(std::move(where)), position_(start) {
     tolerance_ = machine.default_tolerance;
     if (machine.fixed_chain()) filters_ = machine.filter_times();
 }
@@ -124,7 +125,7 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
     } catch (const ArcError& e) {
         return fail(line, e.what());
     }
-    if (const std::size_t made = program_.blocks.size(); static_cast<std::size_t>(chords) > machine_.max_program_blocks - made)
+    if (const std::size_t made = blocks_; static_cast<std::size_t>(chords) > machine_.max_program_blocks - made)
         return fail(line, cat(too_many_blocks(), ": this arc's ", std::to_string(chords), " chords come after ",
                               std::to_string(made), made == 1 ? " block" : " blocks",
                               " (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)"));
@@ -163,7 +164,7 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     // An arc of a huge radius can pass far beyond its end points.
     if (!(target.cwiseAbs().maxCoeff() <= max_coordinate)) return fail(line, "the move passes beyond +-1e6 machine units");
     if (!(std::isfinite(feed) && feed > 0.0)) return fail(line, "the move's speed is not a positive finite number");
-    if (program_.blocks.size() >= machine_.max_program_blocks)
+    if (blocks_ >= machine_.max_program_blocks)
         return fail(line, too_many_blocks());
     for (Eigen::Index a = machine_.limits.axes; a < max_axes; ++a)
         if (std::abs(target[a] - position_[a]) > zero_length)
@@ -178,12 +179,25 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     block.line = line;
     block.dwell = dwell_;
     dwell_ = 0.0;
-    program_.blocks.push_back(block);
+    release();
+    held_ = block;
+    ++blocks_;
     position_ = target;
 }
 
-// The program is kept whole in memory, 120 bytes a block: a few short lines of many-chord arcs
-// would otherwise fill it.
+void CanonRecorder::release() {
+    if (held_) sink_.block(*held_);
+    held_.reset();
+    for (const ProgramEvent& e : held_events_) sink_.event(e);
+    held_events_.clear();
+}
+
+void CanonRecorder::finish() {
+    if (!error_) release();
+}
+
+// read_gcode keeps the program whole in memory, 120 bytes a block: a few short lines of many-chord
+// arcs would otherwise fill it.
 std::string CanonRecorder::too_many_blocks() const {
     const std::string most = std::to_string(machine_.max_program_blocks);
     return cat("the program needs more than ", most, " blocks ([FIRTP]MAX_PROGRAM_BLOCKS = ", most, ")");
@@ -218,16 +232,16 @@ void CanonRecorder::coolant(EventKind kind) {
 void CanonRecorder::event(EventKind kind, double value) {
     if (error_) return;
     const Place at = where_();
-    if (event_waits(kind) && !program_.blocks.empty()) {
-        Block& last = program_.blocks.back();
-        last.termination = Termination::exact_stop;
-        last.tolerance = 0.0;
+    if (event_waits(kind) && held_) {
+        held_->termination = Termination::exact_stop;
+        held_->tolerance = 0.0;
     }
     if (kind == EventKind::dwell) {  // a stop of that length in the timeline (Block::dwell)
         if (!(value >= 0.0 && value <= max_dwell)) return fail(at.line, cat("G4 P", std::to_string(value), ": a dwell must be 0 to ", std::to_string(static_cast<int>(max_dwell)), " s"));
         dwell_ += value;
     }
-    program_.events.push_back(ProgramEvent{kind, value, program_.blocks.size(), at.file, at.line});
+    held_events_.push_back(ProgramEvent{kind, value, blocks_, at.file, at.line});
+    ++events_;
 }
 
 void CanonRecorder::refuse(const std::string& what) {

@@ -9,9 +9,11 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace firtp::gcode {
 
@@ -23,8 +25,16 @@ struct Place {
 
 class CanonRecorder {
 public:
-    // `where` asks the interpreter for its place; `program.start` is the machine position.
-    CanonRecorder(const MachineConfig& machine, Program& program, std::function<Place()> where);
+    // `where` asks the interpreter for its place; `start` is the machine position. Blocks and
+    // events go to `sink` once final: the newest block (and the events after it) at the next
+    // block or at finish().
+    CanonRecorder(const MachineConfig& machine, const AxisVector& start, ProgramSink& sink,
+                  std::function<Place()> where);
+
+    // The end of the program: hands over what is held back.
+    void finish();
+    std::size_t blocks() const { return blocks_; }  // made so far
+    std::size_t events() const { return events_; }
 
     // Program units (mm or inch): conversions in and out of the canon.
     void set_units_inch(bool inch) { scale_ = inch ? 25.4 : 1.0; }
@@ -81,8 +91,13 @@ private:
     std::string too_many_blocks() const;  // mm/s or deg/s; 0 when none
     void fail(int line, const std::string& message);
 
+    void release();  // the held block, then the events after it, to the sink
+
     const MachineConfig& machine_;
-    Program& program_;
+    ProgramSink& sink_;
+    std::optional<Block> held_;              // the newest block: a waiting event may still end it
+    std::vector<ProgramEvent> held_events_;  // the events since it
+    std::size_t blocks_ = 0, events_ = 0;
     std::function<Place()> where_;
     std::optional<FilterTimes> filters_;  // the paper's fixed chain, whose arcs need a feed cap
     AxisVector position_;                 // machine, mm and degrees

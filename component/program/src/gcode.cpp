@@ -103,9 +103,20 @@ private:
     std::string shown_as_;
 };
 
-// Reads `path` through the interpreter; errors name `shown_as`.
-Program interpret(const std::filesystem::path& path, const std::string& shown_as, const MachineConfig& machine,
-                  const AxisVector& start) {
+// Keeps a whole program in memory.
+class Collect : public ProgramSink {
+public:
+    explicit Collect(Program& program) : program_(program) {}
+    void block(const Block& block) override { program_.blocks.push_back(block); }
+    void event(const ProgramEvent& event) override { program_.events.push_back(event); }
+
+private:
+    Program& program_;
+};
+
+// Reads `path` through the interpreter into `sink`; errors name `shown_as`.
+void interpret(const std::filesystem::path& path, const std::string& shown_as, const MachineConfig& machine,
+               const AxisVector& start, ProgramSink& sink) {
     static std::mutex one_at_a_time;
     const std::lock_guard lock(one_at_a_time);
     gcode::InterpreterFiles files(machine);  // parameter file and tool table, removed at the end
@@ -113,10 +124,7 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
     InterpBase& interp = interpreter();
     Run run(interp, path, shown_as);
 
-    Program program;
-    program.file = shown_as;
-    program.start = start;
-    CanonRecorder recorder(machine, program, [&run] { return run.where(); });
+    CanonRecorder recorder(machine, start, sink, [&run] { return run.where(); });
     gcode::set_canon_recorder(&recorder);
     gcode::set_canon_parameter_file(files.parameter_file());
     gcode::set_canon_axes(machine.limits.axes);
@@ -141,7 +149,7 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
     // refused once more lines than a program may have blocks ran without a block or an event.
     std::size_t idle_lines = 0, seen = 0;
     while (!error && !recorder.failed()) {
-        if (const std::size_t made = program.blocks.size() + program.events.size(); made != seen) seen = made, idle_lines = 0;
+        if (const std::size_t made = recorder.blocks() + recorder.events(); made != seen) seen = made, idle_lines = 0;
         if (++idle_lines > std::max<std::size_t>(machine.max_program_blocks, 1000)) {
             const Place at = run.where();
             error = GcodeError(at.file, at.line, 0,
@@ -170,7 +178,25 @@ Program interpret(const std::filesystem::path& path, const std::string& shown_as
         throw *error;
     }
     interp.exit();  // writes the parameters to the temporary copy
+    recorder.finish();
+}
+
+Program collect(const std::filesystem::path& path, const std::string& shown_as, const MachineConfig& machine,
+                const AxisVector& start) {
+    Program program;
+    program.file = shown_as;
+    program.start = start;
+    Collect sink(program);
+    interpret(path, shown_as, machine, start, sink);
     return program;
+}
+
+// A path the interpreter can open, named as the user named it in errors.
+std::filesystem::path openable(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::ifstream(path) || std::filesystem::is_directory(path, ec))
+        throw GcodeError(path.string(), 0, 0, "cannot open file");
+    return std::filesystem::absolute(path, ec);
 }
 
 }  // namespace
@@ -180,14 +206,16 @@ Program parse_gcode(std::string_view text, const std::string& file_name, const M
     gcode::TemporaryDirectory dir;
     const std::filesystem::path path = dir.path() / "program.ngc";
     std::ofstream(path, std::ios::binary) << text;
-    return interpret(path, file_name, machine, start);
+    return collect(path, file_name, machine, start);
 }
 
 Program read_gcode(const std::filesystem::path& path, const MachineConfig& machine, const AxisVector& start) {
-    std::error_code ec;
-    if (!std::ifstream(path) || std::filesystem::is_directory(path, ec))
-        throw GcodeError(path.string(), 0, 0, "cannot open file");
-    return interpret(std::filesystem::absolute(path, ec), path.string(), machine, start);
+    return collect(openable(path), path.string(), machine, start);
+}
+
+void read_gcode(const std::filesystem::path& path, const MachineConfig& machine, const AxisVector& start,
+                ProgramSink& sink) {
+    interpret(openable(path), path.string(), machine, start, sink);
 }
 
 }  // namespace firtp

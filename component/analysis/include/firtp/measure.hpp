@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -32,17 +33,34 @@ struct Measured {
 // a point; they are ignored). Samples must be equally spaced by `period`.
 Measured measure(std::span<const AxisState> samples, std::span<const AxisVector> points, double period);
 
+// The programmed points in order, pulled as the measurement reaches them: the start point, then the
+// end of every block that moves (consecutive points at least min_block_length apart).
+class PointSource {
+public:
+    virtual ~PointSource() = default;
+    virtual std::size_t size() const = 0;  // how many, known before the first is pulled
+    virtual double scale() const = 0;      // max(1, largest |coordinate| of any point)
+    virtual AxisVector next() = 0;         // the next point; called at most size() times
+};
+
 // The same measurement, one sample at a time, with state bounded by the path the tool strays
 // over (not by the number of samples): add() every sample in order, then finish(). The result is
-// bit for bit measure()'s. `points` must outlive the stream. `on_corner(index, error)` is told each corner error (index into
+// bit for bit measure()'s. `points` must outlive the stream; of a PointSource only the points
+// near the tracking are held. `on_corner(index, error)` is told each corner error (index into
 // Measured::corner_errors) as soon as no later sample can change it.
 class MeasureStream {
 public:
     using CornerCallback = std::function<void(std::size_t, double)>;
 
     MeasureStream(std::span<const AxisVector> points, double period, CornerCallback on_corner = {});
+    MeasureStream(PointSource& points, double period, CornerCallback on_corner = {});
+    ~MeasureStream();
+    MeasureStream(const MeasureStream&) = delete;
+    MeasureStream& operator=(const MeasureStream&) = delete;
     void add(const AxisState& sample);
     Measured finish();
+    // Measured::corner_errors stays empty (the callback has them; max_corner_error is still found).
+    void forget_corner_errors() { keep_errors_ = false; }
 
     // The segment of the program the newest tracked sample is on (blocks done, for progress).
     std::size_t segment() const { return k_; }
@@ -59,17 +77,24 @@ private:
     const Segment& segment(std::size_t k);
     void derivatives(std::size_t n);
     void track(std::size_t i, const AxisVector& motion);
-    double chord_distance(std::size_t c, std::size_t j) const;
+    double chord_distance(std::size_t c, std::size_t j);
+    void start(PointSource& points);
+    const AxisVector& point(std::size_t j);  // pulled from the source as needed
+    void release();                          // drops the points no later step looks at
     void chord(std::size_t c, bool has_next);
     void close_corner(std::size_t j, double error);
     void close_open_below(std::size_t j);
 
-    std::vector<AxisVector> own_;       // the distinct points, where `points` repeats one
-    std::span<const AxisVector> points_;  // distinct programmed points (the caller's when it has no repeats)
+    std::unique_ptr<PointSource> own_;  // over the caller's span
+    PointSource* source_ = nullptr;
+    std::size_t size_ = 0;               // distinct programmed points
+    std::deque<AxisVector> points_;      // from points_base_ on, as far as pulled
+    std::size_t points_base_ = 0;
     std::size_t last_ = 0;            // index of the last segment
     double period_;
     double tie_ = 0.0;
     CornerCallback on_corner_;
+    bool keep_errors_ = true;
     Measured m_;
     std::size_t n_ = 0;                      // samples so far
     std::array<AxisVector, 4> recent_{};     // the last four positions, by sample index mod 4

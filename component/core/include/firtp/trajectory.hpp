@@ -34,11 +34,22 @@ struct StreamedTrajectory {
     PlannerStats stats;
 };
 
+// Hands a program's blocks over in order, one at a time, as the planner takes them.
+class BlockPuller {
+public:
+    virtual ~BlockPuller() = default;
+    virtual bool next(Block& block) = 0;  // false: no more blocks
+};
+
 // Runs the planner as the servo thread would, blocks arriving as fast as it takes them, and hands
 // every sample and corner to `sink` as it is made (memory: the planner's queue, not the program's
 // duration). Throws std::invalid_argument naming the block's line when a block is invalid.
 StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                                    std::span<const Block> blocks, TrajectorySink& sink);
+// The same, pulling the blocks from `blocks` as the planner's queue takes them (memory: the
+// queue, not the program's length).
+StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
+                                   BlockPuller& blocks, TrajectorySink& sink);
 
 // The same, keeping every sample.
 Trajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,

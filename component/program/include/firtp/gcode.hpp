@@ -30,8 +30,8 @@
 // temporary directory removed afterwards.
 // One program is read at a time in a process (the interpreter is one global object).
 //
-// The program is kept whole in memory: more than machine.max_program_blocks blocks (chords
-// included) is an error at the line that goes beyond.
+// More than machine.max_program_blocks blocks (chords included) is an error at the line that goes
+// beyond. read_gcode keeps the program whole in memory; a ProgramSink receives it as it is made.
 #pragma once
 
 #include <firtp/machine.hpp>
@@ -67,11 +67,24 @@ struct Program {
     std::vector<ProgramEvent> events;       // in program order, before_block not decreasing
 };
 
+// Receives a program as the interpreter makes it, in program order: each block once it is final
+// (an event that waits still turns the block before it into an exact stop), each event after the
+// blocks it follows. On a GcodeError what it received is not a program: discard it.
+class ProgramSink {
+public:
+    virtual ~ProgramSink() = default;
+    virtual void block(const Block& block) = 0;
+    virtual void event(const ProgramEvent& event) = 0;
+};
+
 // `text` is read as the file `file_name` (errors name it); subroutines are looked up as for a file
 // in the current directory.
 Program parse_gcode(std::string_view text, const std::string& file_name, const MachineConfig& machine,
                     const AxisVector& start = AxisVector::Zero());
 Program read_gcode(const std::filesystem::path& path, const MachineConfig& machine,
                    const AxisVector& start = AxisVector::Zero());
+// The same, handing blocks and events to `sink` instead of keeping them (program.start is `start`).
+void read_gcode(const std::filesystem::path& path, const MachineConfig& machine, const AxisVector& start,
+                ProgramSink& sink);
 
 }  // namespace firtp
