@@ -32,15 +32,23 @@ std::pair<double, int> middle_half_speed(const Trajectory& t, const AxisVector& 
     return {fastest, inside};
 }
 
-TEST(ProgrammedFeed, ABlockEnteredAboveItsFeedLeavesThatSpeedAtOnce) {
+// Three axes as the random machine drew them, 64 blocks of look-ahead, overrides up to 200 %.
+PlannerParameters machine(const AxisLimits& x, const AxisLimits& y, const AxisLimits& z, double period) {
     PlannerParameters p;
     p.limits.axes = 3;
-    p.limits.axis[0] = {286.23985289444931, 304.85719042601966, 10623999.538938846};
-    p.limits.axis[1] = {56.365272543570043, 25614.037821193127, 1345104.9702734549};
-    p.limits.axis[2] = {171.60329139979541, 14037.079562977451, 2277922.9016302587};
-    p.period = 0.0005;
+    p.limits.axis[0] = x;
+    p.limits.axis[1] = y;
+    p.limits.axis[2] = z;
+    p.period = period;
     p.max_rate = 2.0;
     p.queue_capacity = 64;
+    return p;
+}
+
+TEST(ProgrammedFeed, ABlockEnteredAboveItsFeedLeavesThatSpeedAtOnce) {
+    const PlannerParameters p = machine({286.23985289444931, 304.85719042601966, 10623999.538938846},
+                                        {56.365272543570043, 25614.037821193127, 1345104.9702734549},
+                                        {171.60329139979541, 14037.079562977451, 2277922.9016302587}, 0.0005);
     AxisVector a = AxisVector::Zero(), b = AxisVector::Zero();
     a.head<3>() << -4.1237721515922745, -3.9800643782236498, -0.045310815526213431;
     b.head<3>() << -21.455956711423372, -10.700448772635918, -20.629284722515639;
@@ -56,14 +64,9 @@ TEST(ProgrammedFeed, ABlockEnteredAboveItsFeedLeavesThatSpeedAtOnce) {
 }
 
 TEST(ProgrammedFeed, ADenseBlockKeepsTheFeedOfTheBlockAfterItsCorner) {
-    PlannerParameters p;
-    p.limits.axes = 3;
-    p.limits.axis[0] = {468.34483512449827, 7959.4527756540629, 47109572.165463202};
-    p.limits.axis[1] = {151.8778363053593, 23040.089333729658, 34296.085251330551};
-    p.limits.axis[2] = {308.13185955903521, 344.41361937022373, 12508.198989193546};
-    p.period = 0.001;
-    p.max_rate = 2.0;
-    p.queue_capacity = 64;
+    const PlannerParameters p = machine({468.34483512449827, 7959.4527756540629, 47109572.165463202},
+                                        {151.8778363053593, 23040.089333729658, 34296.085251330551},
+                                        {308.13185955903521, 344.41361937022373, 12508.198989193546}, 0.001);
     AxisVector a = AxisVector::Zero(), b = AxisVector::Zero(), c = AxisVector::Zero(), d = AxisVector::Zero();
     a.head<3>() << 9.3762987794749275, -1.4567346845453317, 3.2954188402868305;
     b.head<3>() << 11.200311815263831, -1.8022997165620811, 3.8660332708798566;
