@@ -43,7 +43,7 @@ public:
     std::size_t size() const { return size_; }
     R operator[](std::size_t i) const {
         if (i < first_ || i >= first_ + cached_) {
-            const_cast<UnnamedFile&>(file_).flush();
+            file_.flush();
             first_ = i - i % cache_.size();
             cached_ = std::min(cache_.size(), size_ - first_);
             file_.read(cache_.data(), cached_ * sizeof(R), first_ * sizeof(R));
@@ -52,7 +52,7 @@ public:
     }
 
 private:
-    UnnamedFile file_;
+    mutable UnnamedFile file_;  // reading flushes what is pending first
     std::size_t size_ = 0;
     mutable std::array<R, 256> cache_{};
     mutable std::size_t first_ = 0, cached_ = 0;
