@@ -218,19 +218,22 @@ TEST(Gcode, EmptyProgram) {
 
 }  // namespace
 
-// LinuxCNC 2.9's interpreter crashes (a null dereference in its Python plugin) on a (py...)
-// comment that is not UTF-8: found by fuzz.gcode. Refused with its place; other comments in any
-// encoding still read. (What LinuxCNC's plugin then does with a UTF-8 one is its own: under
-// AddressSanitizer even (pyrun,x = 'Höhe') fails inside it.)
-TEST(Gcode, PythonCommentsThatAreNotUtf8AreRefused) {
+// LinuxCNC 2.9's interpreter runs (py,...), (pyrun,...) and (pyreload) comments in its Python
+// plugin, which crashes on them: a null dereference on text that is not UTF-8, a heap read past a
+// buffer on a syntax error (both found by fuzz.gcode). firtp refuses them with their place; other
+// comments, in any encoding and beginning with "py" as a word, still read.
+TEST(Gcode, PythonCommentsAreRefused) {
     const MachineConfig m = firtp::default_machine();
-    try {
-        firtp::parse_gcode("G21\n( pyrun,x = '\xff\xfe')\nG1 X1 F600\nM2\n", "p.ngc", m);
-        FAIL() << "no error";
-    } catch (const firtp::GcodeError& e) {
-        EXPECT_EQ(e.line(), 2);
-        EXPECT_EQ(e.column(), 14);
-        EXPECT_NE(std::string(e.what()).find("must be UTF-8 text: byte 0xFF"), std::string::npos) << e.what();
+    for (const char* program : {"G21\n( pyrun,x = '\xff\xfe')\nG1 X1 F600\nM2\n", "G21\n( PyRun,a CAM note, not Python)\nG1 X1 F600\nM2\n",
+                                "G21\n( py,x = 1)\nG1 X1 F600\nM2\n"}) {
+        try {
+            firtp::parse_gcode(program, "p.ngc", m);
+            FAIL() << "no error: " << program;
+        } catch (const firtp::GcodeError& e) {
+            EXPECT_EQ(e.line(), 2) << program;
+            EXPECT_EQ(e.column(), 3) << program;
+            EXPECT_NE(std::string(e.what()).find("firtp does not run Python"), std::string::npos) << e.what();
+        }
     }
-    EXPECT_EQ(firtp::parse_gcode("(H\xf6he in Latin-1)\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
+    EXPECT_EQ(firtp::parse_gcode("(H\xf6he in Latin-1)\n(pyramid pocket)\nG1 X1 F600\nM2\n", "p.ngc", m).blocks.size(), 1u);
 }
