@@ -18,7 +18,8 @@ for f in "$corpus"/*; do
   case "$f" in *.ngc|*.nc|*.gcode|*.tap|*.cnc) ;; *) continue ;; esac
   total=$((total + 1))
   name=$(basename "$f")
-  (cd "$work" && timeout 120 "$rs274" -g -t "$work/tools.tbl" "$f" >"$work/canon" 2>"$work/rs274.err" </dev/null)
+  # HOME: rs274's libtooldata maps $HOME/.tool.mmap and truncates it (a running LinuxCNC's table)
+  (cd "$work" && HOME="$work" timeout 120 "$rs274" -g -t "$work/tools.tbl" "$f" >"$work/canon" 2>"$work/rs274.err" </dev/null)
   rs=$?
   (ulimit -v 8000000; timeout 300 "$firtp" plan "$f" >"$work/plan.out" 2>"$work/plan.err")  # 8 GB at most (plan keeps every sample)
   fp=$?

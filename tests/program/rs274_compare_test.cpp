@@ -70,7 +70,9 @@ void to_inches(const fs::path& from, const fs::path& to, bool parameters) {
 std::vector<Move> rs274_moves(const fs::path& program, const fs::path& dir) {
     to_inches(data / "cam.tbl", dir / "inch.tbl", false);
     to_inches(data / "cam.var", dir / "inch.var", true);
-    const std::string command = "cd '" + data.string() + "' && '" FIRTP_RS274 "' -g -i cam.ini -t '" +
+    // HOME: rs274's libtooldata maps $HOME/.tool.mmap, which it truncates; runs side by side (and a
+    // running LinuxCNC) each keep their own.
+    const std::string command = "cd '" + data.string() + "' && HOME='" + dir.string() + "' '" FIRTP_RS274 "' -g -i cam.ini -t '" +
                                 (dir / "inch.tbl").string() + "' -v '" + (dir / "inch.var").string() + "' '" +
                                 program.string() + "' 2>&1";
     FILE* pipe = ::popen(command.c_str(), "r");
