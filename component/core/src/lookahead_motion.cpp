@@ -305,7 +305,8 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     }
     // Held: what follows the hold's stop starts only after a resume, which plans and checks it
     // again; the check ends at the stop.
-    const std::size_t last = held_ && hold_stop_placed() ? hold_stop_index() + 1 : count_;
+    const std::size_t stop = held_ ? hold_stop_index() : count_;
+    const std::size_t last = stop < count_ ? stop + 1 : count_;
     if (first >= last) return true;
     // A block its legs do not cover: lower the corner it is entered from.
     for (std::size_t i = first; i < last; ++i) {

@@ -143,15 +143,18 @@ void Planner::reset(const AxisVector& position) {
     flushed_ = false;
 }
 
+Kernel Planner::brake_kernel(const AxisVector& velocity) const {
+    return paper_ ? Kernel{0.0, 0.0, &chain_} : step_kernel(smoothing_limits(parameters_.limits), velocity);
+}
+
 AxisVector Planner::braking_rest(const AxisVector& position, const AxisVector& velocity) const {
-    const double width = paper_ ? chain_.delay() : step_kernel(smoothing_limits(parameters_.limits), velocity).width();
-    return position + velocity * (0.5 * width);
+    return position + velocity * (0.5 * brake_kernel(velocity).width());
 }
 
 void Planner::brake_from(const AxisVector& position, const AxisVector& velocity) {
     // A leg whose rising edge is already behind (sharp) and whose falling edge starts now: the
     // motion continues at `velocity` through `position` and stops through the kernel.
-    const Kernel kernel = paper_ ? Kernel{0.0, 0.0, &chain_} : step_kernel(smoothing_limits(parameters_.limits), velocity);
+    const Kernel kernel = brake_kernel(velocity);
     const double half = 0.5 * kernel.width();
     reset(position);
     timeline_.snap_rate(1.0);  // the axes move at `velocity` now, whatever the override was

@@ -104,6 +104,9 @@ public:
     bool take_report(CornerReport& report);
 
 private:
+    // The step that brings `velocity` to rest: the paper's chain, or one step at smoothing_limits.
+    Kernel brake_kernel(const AxisVector& velocity) const;
+
     PlannerParameters parameters_;
     FirChain chain_;
     Timeline timeline_;
