@@ -12,6 +12,7 @@
 #include <firtp/trajectory.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,14 +20,50 @@
 
 using namespace firtp;
 
+namespace {
+// --dump K: program K's machine, blocks and corner reports, before and after each raise.
+void dump_case(const PlannerParameters& p, const std::vector<Block>& blocks, const char* title) {
+    std::fprintf(stderr, "=== %s\n", title);
+    const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+    std::printf("  %s: cycle %.6f s, period %g, max_rate %g, slowed %llu checks_failed %llu unfit %llu\n", title, t.cycle_time, p.period, p.max_rate, (unsigned long long)t.stats.slowed, (unsigned long long)t.stats.checks_failed, (unsigned long long)t.stats.unfit);
+    for (int a = 0; a < p.limits.axes; ++a)
+        std::printf("    axis %d: v %g a %g j %g\n", a, p.limits.axis[a].max_velocity, p.limits.axis[a].max_acceleration,
+                    p.limits.axis[a].max_jerk);
+    AxisVector at = AxisVector::Zero();
+    for (const Block& b : blocks) {
+        std::printf("    line %lld: length %.4f feed %g tol %g%s%s\n", static_cast<long long>(b.line), (b.target - at).norm(), b.feed,
+                    b.tolerance, b.termination == Termination::exact_stop ? " G61" : "", b.type == MotionType::traverse ? " G0" : "");
+        at = b.target;
+        std::printf("      to");
+        for (int a = 0; a < p.limits.axes; ++a) std::printf(" %.17g", b.target[a]);
+        std::printf("\n");
+    }
+    std::int64_t line = -1;
+    double since = 0.0, top = 0.0;
+    for (const AxisState& x : t.samples) {
+        if (x.line != line) {
+            if (line >= 0) std::printf("    samples line %lld: %.3f s, top speed %.3f\n", static_cast<long long>(line), x.time - since, top);
+            line = x.line, since = x.time, top = 0.0;
+        }
+        top = std::max(top, x.velocity.norm());
+    }
+    std::printf("    samples line %lld: %.3f s, top speed %.3f\n", static_cast<long long>(line), t.cycle_time - since, top);
+    for (const CornerReport& r : t.corners)
+        std::printf("    corner %lld: beta %.1f deg, %.3f -> %.3f, %s, err %.4g / %.4g\n", static_cast<long long>(r.line),
+                    r.beta * 180.0 / 3.141592653589793, r.speed_in, r.speed_out, describe(r.bound), r.predicted_error, r.epsilon);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
     int programs = 150;
     std::uint64_t seed = 31;
     bool list = false;
+    int dump = -1;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--list") == 0) list = true;
         else if (i + 1 < argc && std::strcmp(argv[i], "--programs") == 0) programs = std::atoi(argv[++i]);
         else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (i + 1 < argc && std::strcmp(argv[i], "--dump") == 0) dump = std::atoi(argv[++i]);
         else {
             std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list]\n");
             return 2;
@@ -35,6 +72,8 @@ int main(int argc, char** argv) {
     const char* names[] = {"velocity", "acceleration", "jerk", "tolerance"};
     std::array<int, 4> tried{}, slower{};
     std::array<double, 4> worst{};
+    double total = 0.0, log_total = 0.0;  // over every plan: to compare two planners on the same programs
+    int plans = 0;
     std::mt19937_64 rng(seed);
     auto cycle = [](const PlannerParameters& p, const std::vector<Block>& blocks) {
         return plan_trajectory(p, AxisVector::Zero(), blocks).cycle_time;
@@ -42,6 +81,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < programs; ++k) {
         const test::RandomCase c = test::random_case(rng);
         const double base = cycle(c.parameters, c.blocks);
+        if (base > 0.0) total += base, log_total += std::log(base), ++plans;
         for (int variant = 0; variant < 4; ++variant) {
             PlannerParameters p = c.parameters;
             std::vector<Block> blocks = c.blocks;
@@ -54,6 +94,12 @@ int main(int argc, char** argv) {
                 for (Block& b : blocks) b.tolerance *= 1.25;
             }
             const double raised = cycle(p, blocks);
+            if (raised > 0.0) total += raised, log_total += std::log(raised), ++plans;
+            if (k == dump) {
+                std::printf("program %d, %s raised\n", k, names[variant]);
+                dump_case(c.parameters, c.blocks, "before");
+                dump_case(p, blocks, "after");
+            }
             ++tried[static_cast<std::size_t>(variant)];
             if (raised > base + 1e-12) {
                 if (list)
@@ -64,6 +110,7 @@ int main(int argc, char** argv) {
             }
         }
     }
+    std::printf("%d plans: cycle times sum %.6f s, geometric mean %.6f s\n", plans, total, std::exp(log_total / plans));
     std::printf("| raised by 25 %% | programs | slower | worst slow-down |\n|---|---:|---:|---:|\n");
     for (std::size_t v = 0; v < 4; ++v)
         std::printf("| %s | %d | %d | %.1f %% |\n", names[v], tried[v], slower[v], 100.0 * worst[v]);

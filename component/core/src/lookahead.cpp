@@ -123,6 +123,12 @@ Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
     return r;
 }
 
+Lookahead::Regime Lookahead::junction_regime(bool before_dense, const Regime& before, bool after_dense,
+                                             const Regime& after) const {
+    if (before_dense && after_dense) return after.t2 > before.t2 ? after : before;
+    return before_dense ? before : after_dense ? after : sparse_;
+}
+
 double Lookahead::box(const AxisVector& dv, const Regime& regime) const {
     double t = 0.0;
     for (int i = 0; i < limits_.axes; ++i)
@@ -185,6 +191,10 @@ double Lookahead::room_cap(std::size_t i, double alpha) const {
     return std::sqrt(seg_length(i) / alpha);
 }
 
+bool Lookahead::slower_long(std::size_t k, std::size_t i) const {
+    return !seg(k).short_block && seg(k).feed_max < seg(i).feed_max;
+}
+
 bool Lookahead::smooth(std::size_t i) const {
     const Segment& s = seg(i);
     return s.kind != Kind::stop && s.sparse_cap >= std::min(s.feed_max, seg(i + 1).feed_max);
@@ -204,14 +214,19 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     return std::max(corners, std::min(ramps, s.feed_max));
 }
 
-// Planned dense, its corners' steps must fit the legs on both sides (room) and, with the run's
-// jerk stage, keep about half the tolerance for the step itself (lookahead.hpp, Regime).
+// Planned dense, its corners' steps must fit the legs on both sides (room) and, with the jerk
+// stage each junction would then get (the wider of its blocks' dense regimes), keep about half the
+// tolerance for the step itself (lookahead.hpp, Regime).
 double Lookahead::dense_estimate(std::size_t i) const {
     double v = seg(i).feed_max;
+    const Regime own = dense_regime(seg(i).tolerance);
     for (std::size_t j : {i - 1, i}) {
         if (j >= i + 1 || j + 1 >= count_ || seg(j).kind == Kind::stop) continue;  // (i - 1 wraps for i = 0)
+        const std::size_t k = j == i ? i + 1 : j;  // the neighbour across junction j
+        if (slower_long(k, i)) v = std::min(v, seg(k).feed_max);
         const Segment& s = seg(j);
-        const Regime r = dense_regime(s.tolerance);
+        const Regime r = j == i ? junction_regime(true, own, seg(i + 1).dense, seg(i + 1).regime)
+                                : junction_regime(s.dense, s.regime, true, own);
         const double alpha = box(s.turn.du, r);
         if (!(alpha > 0.0)) continue;
         v = std::min(v, std::sqrt(std::min(seg_length(j), seg_length(j + 1)) / alpha));
@@ -225,8 +240,10 @@ double Lookahead::dense_estimate(std::size_t i) const {
 void Lookahead::classify(std::size_t i) {
     Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return;  // under way: it stays what it was planned as
-    const bool entry_smooth = i == 0 || seg(i - 1).kind == Kind::stop || smooth(i - 1);
-    const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || smooth(i);
+    // A long neighbour slower than this block is not smooth either: the junction is a corner at
+    // one speed on both sides, and a block held at one speed would keep the neighbour's.
+    const bool entry_smooth = i == 0 || seg(i - 1).kind == Kind::stop || (smooth(i - 1) && !slower_long(i - 1, i));
+    const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || (smooth(i) && !slower_long(i + 1, i));
     // Dense: inside one dense kernel at its feed (several blocks share a window); a longer block
     // held at one speed would crawl through its whole length behind a slow junction.
     const Regime dense = dense_regime(s.tolerance);
@@ -249,9 +266,7 @@ void Lookahead::junction_caps(std::size_t i) {
         return;
     }
     s.kind = s.dense && n.dense ? Kind::dense : Kind::corner;
-    // A junction next to a dense block is smoothed as the dense run is.
-    s.junction = s.dense ? s.regime : n.dense ? n.regime : sparse_;
-    if (s.dense && n.dense && n.regime.t2 > s.regime.t2) s.junction = n.regime;
+    s.junction = junction_regime(s.dense, s.regime, n.dense, n.regime);
     s.turn_alpha = box(s.turn.du, s.junction);
     s.corner_cap = infinity;
     s.cap_bound = CornerBound::feed;

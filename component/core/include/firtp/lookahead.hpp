@@ -168,6 +168,9 @@ private:
 
     // Regimes and steps.
     Regime dense_regime(double epsilon) const;
+    // The regime of the junction between a block (dense or not, in `before`) and the next: a
+    // junction next to a dense block is smoothed as the dense run is, the wider jerk stage of two.
+    Regime junction_regime(bool before_dense, const Regime& before, bool after_dense, const Regime& after) const;
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
@@ -183,6 +186,7 @@ private:
     void classify(std::size_t i);           // dense or not, from its length and its junctions
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i
     bool smooth(std::size_t i) const;       // junction i does not slow the blocks down
+    bool slower_long(std::size_t k, std::size_t i) const;  // k is a long block slower than i
     double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
     double dense_estimate(std::size_t i) const;   // ... and planned dense
     double room_cap(std::size_t i, double alpha) const;  // dense i: highest c with c alpha <= L/c
