@@ -11,6 +11,7 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int bisection_steps = 48;
+constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junction this slow is its stop
 
 // Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
 template <class F>
@@ -646,6 +647,15 @@ void Lookahead::place_hold_stop() {
         }
         if (i + 1 < count_) seg(i + 1).brake = true;
         a = s.kind == Kind::corner ? s.b : entry_for(i + 1);
+        // A dense junction that brakes to almost nothing is the hold's stop: the next block would
+        // otherwise be entered at a crawl, which a dense block keeps (seed 35, program 350).
+        if (s.kind == Kind::dense && a < hold_crawl * s.b) {
+            seg(i + 1).brake = false;
+            s.hold_end = true;
+            junction_caps(i);
+            backward(i);
+            return;
+        }
         if (!(a > 0.0)) return;
     }
 }

@@ -50,6 +50,12 @@ Lookahead::NextStep Lookahead::next_step() const {
             n.centre = std::max(n.centre, stop + rules_.spacing(frozen_.step.shape(), n.step.shape()));
             n.centre = std::max(n.centre, stop + frozen_.rest);
             n.centre = std::max(n.centre, start_after_stop(0, stop, frozen_.step, half));
+            // Every kernel still under way must have settled too: a hold's stop may fall inside
+            // the wider kernel of the step before it, which then ends after the stop's.
+            for (std::size_t k = 0; k < timeline_->size(); ++k) {
+                const Leg& leg = timeline_->at(k);
+                n.centre = std::max(n.centre, on_tick_grid(leg.finish() - timeline_->local_time(leg, timeline_->now())) + half);
+            }
         } else if (s.dwell > 0.0) {  // from rest: the dwell runs from when the block came
             const double since = s.added - static_cast<double>(timeline_->now()) * period;
             n.centre = std::max(n.centre, on_tick_grid(since + s.dwell) + half);
@@ -345,7 +351,9 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
     max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
     const double begin = std::max(enter_[first] - max_width_, 0.0);
-    LimitCheck limits = sweep_.check(legs_, begin, end, machine_, parameters_.period);
+    // Held, the legs after the hold's stop are the resume's plan, not motion: only those up to it
+    // (they had cancelled a hold's braking against the resume's start: 2x an axis' acceleration).
+    LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), begin, end, machine_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
     for (std::size_t k = 0; k < legs && limits.ok; ++k)

@@ -11,6 +11,11 @@ namespace firtp {
 namespace {
 
 constexpr double slack = 1.0 + 1e-9;
+// A second stage this much shorter than the first moves nothing (a junction step of almost no
+// speed change has a box of ~1e-17 s): checked as one stage, whose jump is then exact.
+constexpr double negligible_stage = 1e-9;
+// Knots this close are one: the steps that meet at a junction start on sums that round differently.
+constexpr double same_knot = 1e-12;
 
 // A knot of the sum: the jerk changes by `jerk`, the acceleration by `acceleration` (one-stage
 // kernels), the velocity by `velocity` (sharp steps).
@@ -50,7 +55,7 @@ std::size_t add_knots(std::vector<Knot>& knots, std::size_t n, const AxisVector&
     };
     if (ta <= 0.0) {
         add(start, dv, 1);
-    } else if (tb <= 0.0) {
+    } else if (tb <= negligible_stage * ta) {  // (a stage of 1e-17 s would give jerks of 1e21 to cancel)
         add(start, dv / ta, 2);
         add(start + ta, -dv / ta, 2);
     } else {
@@ -127,11 +132,18 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
             c.state(t, v, a);
         }
         if (k == n) break;
-        const Knot& knot = knots[k];
-        if (knot.order == 2)
+        // Every knot at this time at once: the jumps of two legs meeting at a junction cancel.
+        AxisVector jump = AxisVector::Zero();
+        bool jumps = false;
+        for (; k < n && knots[k].t <= t + same_knot; ++k) {
+            const Knot& knot = knots[k];
+            if (knot.order == 2) jump += knot.value, jumps = true;
+            (knot.order == 3 ? j : knot.order == 2 ? a : v) += knot.value;
+        }
+        --k;
+        if (jumps)
             for (int i = 0; i < limits.axes; ++i)  // a jump in acceleration, as the samples' differences see it
-                if (knot.value[i] != 0.0) c.over(knot.value[i] / period, limits.axis[i].max_jerk, t, i, 3);
-        (knot.order == 3 ? j : knot.order == 2 ? a : v) += knot.value;
+                if (jump[i] != 0.0) c.over(jump[i] / period, limits.axis[i].max_jerk, t, i, 3);
         c.state(t, v, a);
         if (!c.result.ok) break;
     }
