@@ -8,7 +8,7 @@
 // - the end exactly on the last point; an abort rests on the path and runs nothing after it;
 // - a hold or an abort comes to rest within hold_time_bound(): the step under way ends, and one
 //   more step brings the axes from the highest speed to rest.
-// Seeded; FIRTP_RANDOM_SCALE soaks. One test is disabled: see the note above it.
+// Seeded; FIRTP_RANDOM_SEED shifts the seeds and FIRTP_RANDOM_SCALE soaks.
 #include "support/random_machine.hpp"
 
 #include <firtp/measure.hpp>
