@@ -33,7 +33,7 @@ struct HostOptions {
     Clock::duration status_timeout = std::chrono::seconds(3);         // no status -> lost
     double feed_scale = 1.0;       // initial feed override
     double max_feed_scale = 1.5;   // set_feed_scale clamps to 0 .. this
-    bool record_axis_states = false;  // keep every FIRTP_AXIS_STATE message (for --csv)
+    bool record_axis_states = false;  // keep every FIRTP_AXIS_STATE message (axis_states())
     // Called with every intact FIRTP_AXIS_STATE message as it arrives (in step()), kept or not.
     std::function<void(const firtp_lcm::axis_state_t&)> on_axis_state;
     std::int64_t program_id = 0;      // 0: microseconds of the system clock
