@@ -4,10 +4,15 @@
 #include "plan_run.hpp"
 #include <firtp/recorded_states.hpp>
 #include "run_command.hpp"
+#include "spooled_feed.hpp"
 
 #include <firtp/host_command.hpp>
 
+#include <fstream>
 #include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
 
 namespace firtp::cli {
 
@@ -20,16 +25,28 @@ int host_command(std::span<const std::string> args) {
     host::HostCommandOptions h;
     h.program = options.plan.program;
     h.machine = load_machine_config(options.plan);
+    h.read_program = [&h] { return read_spooled(h.program, h.machine); };
     h.url = options.lcm_url;
     h.host.max_feed_scale = options.max_feed;
     if (options.plan.csv) {
-        h.host.record_axis_states = true;
+        // Each axis state to its CSV row as it arrives; the file in place at the end.
+        struct Recording {
+            OutputFiles files;
+            std::ofstream out;
+            std::optional<CsvWriter> rows;
+            std::optional<AxisStateSamples> samples;
+        };
+        const auto recording = std::make_shared<Recording>();
         const std::filesystem::path csv = *options.plan.csv;
-        const double period = h.machine.period;
-        h.save_axis_states = [csv, period](const std::vector<firtp_lcm::axis_state_t>& states) {
-            OutputFiles outputs;
-            outputs.write(csv, [&](std::ostream& out) { write_csv(out, firtp::samples_from_axis_states(states, period)); });
-            outputs.commit();
+        recording->out.open(recording->files.create(csv), std::ios::binary);
+        recording->rows.emplace(recording->out);
+        recording->samples.emplace(h.machine.period, [rows = &*recording->rows](const AxisState& s) { rows->row(s); });
+        h.record_axis_state = [recording](const firtp_lcm::axis_state_t& m) { recording->samples->add(m); };
+        h.axis_states_done = [recording, csv] {
+            recording->samples->finish();
+            recording->out.close();
+            if (!recording->out) throw std::runtime_error("cannot write '" + csv.string() + "'");
+            recording->files.commit();
         };
     }
     return host::run_host_command(h);

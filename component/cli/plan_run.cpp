@@ -56,14 +56,20 @@ PlanRun prepare_plan(const PlanOptions& options) {
     return run;
 }
 
+std::shared_ptr<ProgramSpool> spool_program(const std::filesystem::path& file, const MachineConfig& machine,
+                                            const AxisVector& start) {
+    auto spool = std::make_shared<ProgramSpool>(start);
+    read_gcode(file, machine, start, *spool);
+    spool->close();
+    return spool;
+}
+
 PlanRun prepare_spooled_plan(const PlanOptions& options) {
     PlanRun run;
     run.machine = load_machine_config(options);
     run.parameters = run.machine.planner_parameters();
     run.program.file = options.program.string();
-    auto spool = std::make_shared<ProgramSpool>(run.program.start);
-    read_gcode(options.program, run.machine, run.program.start, *spool);
-    spool->close();
+    auto spool = spool_program(options.program, run.machine, run.program.start);
     run.program.events = std::move(spool->events());
     run.blocks = spool->blocks();
     run.feed_time = spool->feed_time();

@@ -38,6 +38,9 @@ MachineConfig load_machine_config(const PlanOptions& options);
 // Loads the machine (INI or built-in, then overrides) and reads the program: everything but the
 // plan. Throws UsageError for bad flag values, ConfigError / GcodeError otherwise.
 PlanRun prepare_plan(const PlanOptions& options);
+// Reads a program through LinuxCNC's interpreter into a ProgramSpool, closed (throws GcodeError).
+std::shared_ptr<ProgramSpool> spool_program(const std::filesystem::path& file, const MachineConfig& machine,
+                                            const AxisVector& start);
 // The same with the blocks in a ProgramSpool, not in memory: for a plan that streams.
 PlanRun prepare_spooled_plan(const PlanOptions& options);
 

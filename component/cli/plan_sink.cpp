@@ -1,9 +1,12 @@
 #include "plan_sink.hpp"
 
+#include <stdexcept>
+
 namespace firtp::cli {
 
 PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples)
-    : run_(run), progress_(progress), keep_(keep_samples), reported_before_(run.corners.size()) {
+    : run_(run), progress_(progress), keep_(keep_samples) {
+    if (!run.corners.empty()) throw std::logic_error("PlanSink: corner reports before the plan");
     if (csv) csv_.emplace(*csv);
     run.corners.clear_errors();
     auto on_corner = [this](std::size_t i, double e) { corner_measured(i, e); };
@@ -35,7 +38,6 @@ void PlanSink::corner(const CornerReport& report) {
 
 void PlanSink::corner_measured(std::size_t index, double error) {
     run_.corners.add_error(error);
-    if (index < reported_before_) return plot_.corner_error(index, error, run_.corners[index]);
     if (reports_.empty()) return errors_.push_back(error);
     plot_.corner_error(index, error, reports_.front());
     reports_.pop_front();

@@ -22,8 +22,9 @@ namespace firtp::cli {
 
 class PlanSink : public TrajectorySink {
 public:
-    // run: prepared (points known); its corner reports arrive through corner(), or were made
-    // before (run measures the received samples against the reference plan's). csv, progress: may be null.
+    // run: prepared (points known), no corner reports yet: they arrive through corner(), from the
+    // plan that makes the samples or (run) from the reference plan made alongside the received
+    // samples. csv, progress: may be null.
     PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples);
 
     void sample(const AxisState& state) override;
@@ -44,7 +45,6 @@ private:
     std::unique_ptr<PointSource> points_;  // the spool's, when spooled
     std::optional<MeasureStream> measure_;
     PlotSamples plot_;
-    std::size_t reported_before_;       // corners of a plan made before (run: the reference's)
     std::deque<CornerReport> reports_;  // reported, not yet measured
     std::deque<double> errors_;         // measured before their report came
 };

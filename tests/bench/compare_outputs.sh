@@ -4,6 +4,7 @@
 # two firtp binaries, and compares what they write byte for byte: CSV, JSON, the summary (stdout),
 # stderr and the exit status. Exit 1 on any difference. Used to check that streaming `firtp plan`
 # (issue 14) changed none of its outputs: build the old commit's firtp, then run this.
+# COMMAND=run compares `firtp run` the same way (the chain over LCM and the component).
 set -u
 old=$(realpath "$1"); new=$(realpath "$2"); shift 2
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -29,7 +30,7 @@ for c in "${cases[@]}"; do
     bin=$old; [ $side = new ] && bin=$new
     d=$work/$side; mkdir -p "$d"
     # shellcheck disable=SC2086
-    (cd "$d" && "$bin" plan $args --csv "$name.csv" --json "$name.json" > "$name.out" 2> "$name.err"; echo $? > "$name.rc")
+    (cd "$d" && "$bin" "${COMMAND:-plan}" $args --csv "$name.csv" --json "$name.json" > "$name.out" 2> "$name.err"; echo $? > "$name.rc")
   done
   for f in csv json out err rc; do
     if ! cmp -s "$work/old/$name.$f" "$work/new/$name.$f"; then echo "DIFFERENT $name.$f"; status=1; fi

@@ -1,6 +1,6 @@
 // `firtp plan` on a long dense program made at run time: blocks/s and peak memory.
 //
-//   firtp_plan_memory --firtp PATH [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]
+//   firtp_plan_memory --firtp PATH [--command run] [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]
 //   firtp_plan_memory --firtp PATH --compare N1,N2 [--slow-compare K] --max-ratio R [...]
 //   firtp_plan_memory --firtp PATH --sizes N1,N2,... [--max-bytes-per-block B]
 //
@@ -10,7 +10,8 @@
 // to a temporary directory, planned by `firtp plan PROGRAM --csv --json` (the outputs go to the
 // same directory; --no-outputs: the summary only), started with posix_spawn and waited for with
 // wait4, whose rusage gives the child's peak resident set (ru_maxrss; posix_spawn does not copy
-// this process's pages, so the figure is firtp's own).
+// this process's pages, so the figure is firtp's own). --command run: `firtp run` instead (the
+// whole chain in one process: host, LCM, component, received samples), with the same outputs.
 //
 // --compare N1,N2 plans N1 and then N2 blocks (--slow-compare K: N blocks at F3000 and again K
 // times slower) and fails (exit 1) when the larger run's peak RSS is above R times the smaller's
@@ -45,6 +46,7 @@ namespace {
 
 struct Options {
     std::string firtp;
+    std::string command = "plan";  // or "run"
     long blocks = 67000;
     double slow = 1.0;
     std::optional<std::string> ini;
@@ -98,7 +100,7 @@ struct Result {
 Result plan(const Options& o, const std::filesystem::path& dir, long blocks, double slow) {
     const std::filesystem::path program = dir / ("program_" + std::to_string(blocks) + ".ngc");
     write_program(program, blocks, 3000.0 / slow);
-    std::vector<std::string> args{o.firtp, "plan", program.string()};
+    std::vector<std::string> args{o.firtp, o.command, program.string()};
     if (o.outputs) args.insert(args.end(), {"--csv", (dir / "out.csv").string(), "--json", (dir / "out.json").string()});
     if (o.ini) args.insert(args.end(), {"--ini", *o.ini});
     std::vector<char*> argv;
@@ -120,7 +122,7 @@ Result plan(const Options& o, const std::filesystem::path& dir, long blocks, dou
     Result r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error("firtp plan failed on " + program.string() + " (status " + std::to_string(status) + ")");
+        throw std::runtime_error("firtp " + o.command + " failed on " + program.string() + " (status " + std::to_string(status) + ")");
     r.blocks = blocks;
     r.peak_kib = usage.ru_maxrss;
     std::ifstream in(summary);
@@ -163,7 +165,7 @@ int sizes(const Options& o, const std::filesystem::path& dir) {
 
 int usage(const char* self) {
     std::fprintf(stderr,
-                 "usage: %s --firtp PATH [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]\n"
+                 "usage: %s --firtp PATH [--command plan|run] [--blocks N] [--slow K] [--ini FILE] [--no-outputs] [--keep DIR]\n"
                  "       %s --firtp PATH (--compare N1,N2 | --blocks N --slow-compare K) [--max-ratio R]\n"
                  "          [--max-bytes-per-block B]\n"
                  "       %s --firtp PATH --sizes N1,N2,... [--max-bytes-per-block B]\n",
@@ -183,6 +185,7 @@ int main(int argc, char** argv) {
         };
         try {
             if (a == "--firtp") o.firtp = value();
+            else if (a == "--command") o.command = value();
             else if (a == "--blocks") o.blocks = std::stol(value());
             else if (a == "--slow") o.slow = std::stod(value());
             else if (a == "--ini") o.ini = value();
@@ -210,7 +213,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (o.firtp.empty() || o.blocks <= 0 || o.slow <= 0.0) return usage(argv[0]);
+    if (o.firtp.empty() || o.blocks <= 0 || o.slow <= 0.0 || (o.command != "plan" && o.command != "run"))
+        return usage(argv[0]);
     try {
         std::filesystem::path dir;
         if (o.keep) {

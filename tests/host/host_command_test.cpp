@@ -50,12 +50,12 @@ struct HostCommandTest : ::testing::Test {
 TEST_F(HostCommandTest, EmptyProgramIsDone) {
     options.program = write("empty.ngc", "G21 G90\nM2\n");
     bool saved = false;
-    options.save_axis_states = [&](const std::vector<firtp_lcm::axis_state_t>& states) {
-        saved = true;
-        EXPECT_TRUE(states.empty());
-    };
+    int states = 0;
+    options.record_axis_state = [&](const firtp_lcm::axis_state_t&) { ++states; };
+    options.axis_states_done = [&] { saved = true; };
     EXPECT_EQ(run_host_command(options), host_exit_done);
     EXPECT_TRUE(saved);
+    EXPECT_EQ(states, 0);
     EXPECT_THAT(contents(report), HasSubstr("empty.ngc: done"));
 }
 

@@ -4,6 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <deque>
+#include <memory>
+
 namespace firtp::host::test {
 namespace {
 
@@ -27,6 +31,50 @@ TEST_F(StreamTest, DeliversEveryBlockOnceInOrderWithinQueueFree) {
     EXPECT_EQ(component.accepted[6].target[0], component.accepted[5].target[0]);  // zero-length sent
     EXPECT_EQ(host.statistics().go_backs, 0);
     EXPECT_EQ(host.progress().executed, 50u);
+}
+
+// Hands a program's blocks over one at a time, counting them.
+class CountingPuller : public BlockPuller {
+public:
+    CountingPuller(const std::vector<Block>& blocks, std::size_t& read) : blocks_(blocks), read_(read) {}
+    bool next(Block& block) override {
+        if (read_ == blocks_.size()) return false;
+        block = blocks_[read_++];
+        return true;
+    }
+
+private:
+    const std::vector<Block>& blocks_;
+    std::size_t& read_;
+};
+
+// The host reads every block once to check them all before sending, then again only as flow
+// control lets them go: it never holds more than the component's window, not the program.
+TEST_F(StreamTest, ReadsTheProgramOnlyAsFarAsTheComponentTakesIt) {
+    FakeComponent component(lcm, 4);
+    component.ticks_per_block = 5;
+    const Program program = line_program(2000);
+    std::deque<std::size_t> reads;  // blocks handed out, one counter a reader
+    ProgramFeed feed;
+    feed.blocks = program.blocks.size();
+    feed.read = [&] {
+        reads.push_back(0);
+        return std::make_unique<CountingPuller>(program.blocks, reads.back());
+    };
+    Host host(lcm, feed, options_for(clock));
+    ASSERT_EQ(reads.size(), 2u);
+    EXPECT_EQ(reads[0], 2000u);  // checked
+    EXPECT_EQ(reads[1], 0u);     // nothing sent yet
+    component.tick();
+    std::int64_t ahead = 0;  // read but not yet executed, at most
+    EXPECT_EQ(run_loop(host, component, clock, 100000,
+                       [&](int) { ahead = std::max(ahead, static_cast<std::int64_t>(reads[1]) - component.executed); }),
+              Result::done);
+    EXPECT_EQ(seqs(component.accepted), one_to(2000));
+    EXPECT_EQ(reads[1], 2000u);
+    EXPECT_EQ(reads.size(), 2u);
+    EXPECT_LE(ahead, 2 * 4 + 1);  // the queue and what its free slots allow
+    EXPECT_GE(ahead, 4);
 }
 
 TEST_F(StreamTest, SendsOnlyTheInitialWindowBeforeTheFirstStatus) {

@@ -8,6 +8,8 @@
 #include <firtp/messages.hpp>
 
 #include <algorithm>
+#include <deque>
+#include <stdexcept>
 #include <utility>
 
 namespace firtp::host {
@@ -29,9 +31,64 @@ struct Outgoing {
     firtp_lcm::event_t event{};
 };
 
-std::int64_t records(const Program& program) { return std::ssize(program.blocks) + std::ssize(program.events); }
+// The program's messages in seq order: the events before block i, then block i; the events after
+// the last block at the end.
+class Records {
+public:
+    Records(const ProgramFeed& feed, std::int64_t program_id) : feed_(feed), blocks_(feed.read()), program_(program_id) {}
+
+    bool next(Outgoing& o) {
+        const std::int64_t seq = seq_ + 1;
+        o = Outgoing{};
+        if (event_ < feed_.events.size() && feed_.events[event_].before_block <= block_) {
+            const ProgramEvent& e = feed_.events[event_++];
+            o.is_event = true;
+            o.event = messages::event_message(static_cast<std::int8_t>(e.kind), e.value, e.line, program_, seq, 0);
+        } else if (block_ < feed_.blocks) {
+            Block b;
+            if (!blocks_->next(b)) throw std::logic_error("host: the program has fewer blocks than it said");
+            ++block_;
+            o.block = messages::to_message(b, program_, seq, 0);
+        } else {
+            return false;
+        }
+        seq_ = seq;
+        return true;
+    }
+
+private:
+    const ProgramFeed& feed_;
+    std::unique_ptr<BlockPuller> blocks_;
+    std::int64_t program_;
+    std::int64_t seq_ = 0;
+    std::size_t event_ = 0, block_ = 0;
+};
+
+std::int64_t records(const ProgramFeed& program) { return std::ssize(program.events) + static_cast<std::int64_t>(program.blocks); }
+
+class VectorPuller : public BlockPuller {
+public:
+    explicit VectorPuller(std::shared_ptr<const Program> program) : program_(std::move(program)) {}
+    bool next(Block& block) override {
+        if (at_ == program_->blocks.size()) return false;
+        block = program_->blocks[at_++];
+        return true;
+    }
+
+private:
+    std::shared_ptr<const Program> program_;
+    std::size_t at_ = 0;
+};
 
 }  // namespace
+
+ProgramFeed feed_of(std::shared_ptr<const Program> program) {
+    ProgramFeed feed;
+    feed.blocks = program->blocks.size();
+    feed.events = program->events;
+    feed.read = [program] { return std::make_unique<VectorPuller>(program); };
+    return feed;
+}
 
 const char* to_string(Result result) {
     switch (result) {
@@ -58,39 +115,27 @@ const char* state_name(int state) {
 }
 
 struct Host::State {
-    State(lcm::LCM& l, const Program& program, HostOptions o)
+    State(lcm::LCM& l, const ProgramFeed& program, HostOptions o)
         : lcm(l),
           options(std::move(o)),
           program_id(options.program_id != 0 ? options.program_id : messages::now_utime()),
-          stream(program_id, records(program),
+          feed(program),
+          stream(program_id, records(feed),
                  {options.initial_window, options.resend_timeout, options.max_resends}),
           control(program_id, options.feed_scale, options.max_feed_scale, options.control_period),
           axes(options.record_axis_states),
-          watch(program_id, records(program)) {
-        // Events before block i, then block i; the events after the last block at the end.
-        std::size_t next_event = 0;
-        auto add_events = [&](std::size_t before_block) {
-            for (; next_event < program.events.size() && program.events[next_event].before_block <= before_block; ++next_event) {
-                const ProgramEvent& e = program.events[next_event];
-                Outgoing record;
-                record.is_event = true;
-                record.event = messages::event_message(static_cast<std::int8_t>(e.kind), e.value, e.line, program_id,
-                                                  std::ssize(out) + 1, 0);
-                out.push_back(record);
-                if (result != Result::running) continue;
-                if (auto problem = messages::validate(record.event)) finish(Result::failed, *problem);
+          watch(program_id, records(feed)) {
+        // Every message checked before anything is sent; then read again as they go out.
+        Records check(feed, program_id);
+        for (Outgoing m; check.next(m);) {
+            const auto problem = m.is_event ? messages::validate(m.event) : messages::validate(m.block);
+            if (problem) {
+                finish(Result::failed, *problem);
+                break;
             }
-        };
-        for (std::size_t i = 0; i < program.blocks.size(); ++i) {
-            add_events(i);
-            Outgoing record;
-            record.block = messages::to_message(program.blocks[i], program_id, std::ssize(out) + 1, 0);
-            out.push_back(record);
-            if (result != Result::running) continue;
-            if (auto problem = messages::validate(record.block)) finish(Result::failed, *problem);
         }
-        add_events(program.blocks.size());
-        moves = program.blocks.size();
+        reader.emplace(feed, program_id);
+        moves = feed.blocks;
     }
 
     Clock::time_point now() const { return options.clock ? options.clock() : Clock::now(); }
@@ -113,6 +158,7 @@ struct Host::State {
             return;
         }
         axes.on_message(received.message);
+        if (options.on_axis_state) options.on_axis_state(received.message);
     }
 
     void on_reached_bytes(const lcm::ReceiveBuffer* buffer, const std::string&) {
@@ -171,11 +217,28 @@ struct Host::State {
         }
     }
 
+    // The message of `seq`, read from the program when first asked for: seq from the oldest one
+    // not yet acknowledged at the latest forget_acknowledged() on.
+    Outgoing& record(std::int64_t seq) {
+        while (window_first + std::ssize(window) <= seq) {
+            Outgoing o;
+            if (!reader->next(o)) throw std::logic_error("host: seq beyond the program");
+            window.push_back(std::move(o));
+        }
+        return window[static_cast<std::size_t>(seq - window_first)];
+    }
+
+    // Not before check_stall() of the same step: the stalled seq may have been acknowledged since.
+    void forget_acknowledged() {
+        for (; !window.empty() && window_first <= stream.acknowledged(); ++window_first) window.pop_front();
+    }
+
     void publish_blocks(Clock::time_point t) {
+        forget_acknowledged();
         for (int n = 0; n < options.max_burst; ++n) {
             const std::optional<std::int64_t> seq = stream.next();
             if (!seq) return;
-            Outgoing& o = out[static_cast<std::size_t>(*seq - 1)];
+            Outgoing& o = record(*seq);
             if (o.is_event) {
                 o.event.utime = messages::now_utime();
                 messages::publish(lcm, messages::event_channel, o.event);  // sealed after the utime
@@ -192,7 +255,7 @@ struct Host::State {
     void check_stall() {
         const std::optional<std::int64_t> seq = stream.stalled();
         if (!seq) return;
-        const Outgoing& o = out[static_cast<std::size_t>(*seq - 1)];
+        const Outgoing& o = record(*seq);
         std::string text = (o.is_event ? messages::describe(o.event) : messages::describe(o.block)) + " not accepted after " +
                            std::to_string(options.max_resends) + " resends";
         if (latest && !latest->error_text.empty()) text += "; component: " + latest->error_text;
@@ -202,8 +265,11 @@ struct Host::State {
     lcm::LCM& lcm;
     HostOptions options;
     std::int64_t program_id;
-    std::vector<Outgoing> out;  // blocks and events, seq i at index i - 1
-    std::size_t moves = 0;      // blocks among them
+    ProgramFeed feed;                 // its reader's view of the program
+    std::optional<Records> reader;    // what to send next, read as it goes
+    std::deque<Outgoing> window;      // seq window_first on: sent or about to be, not known acknowledged
+    std::int64_t window_first = 1;
+    std::size_t moves = 0;            // blocks among the messages
     BlockStream stream;
     ControlSender control;
     AxisRecorder axes;
@@ -225,6 +291,9 @@ struct Host::State {
 };
 
 Host::Host(lcm::LCM& lcm, const Program& program, HostOptions options)
+    : Host(lcm, feed_of(std::make_shared<const Program>(program)), std::move(options)) {}
+
+Host::Host(lcm::LCM& lcm, const ProgramFeed& program, HostOptions options)
     : state_(std::make_unique<State>(lcm, program, std::move(options))) {
     State& s = *state_;
     s.status_subscription = lcm.subscribe(messages::status_channel, &State::on_status_bytes, &s);
@@ -314,7 +383,7 @@ const std::vector<firtp_lcm::axis_state_t>& Host::axis_states() const { return s
 Progress Host::progress() const {
     const State& s = *state_;
     Progress p;
-    p.blocks = s.out.size();
+    p.blocks = static_cast<std::size_t>(records(s.feed));
     p.sent = static_cast<std::size_t>(s.stream.highest_sent());
     p.acknowledged = static_cast<std::size_t>(s.stream.acknowledged());
     p.feed_request = s.control.feed_scale();

@@ -47,11 +47,13 @@ int exit_status(Result result, bool recording_incomplete) {
 }  // namespace
 
 int run_host_command(const HostCommandOptions& options) {
-    const Program program = read_gcode(options.program, options.machine);
+    const ProgramFeed program = options.read_program
+                                    ? options.read_program()
+                                    : feed_of(std::make_shared<const Program>(read_gcode(options.program, options.machine)));
     const std::unique_ptr<lcm::LCM> lcm = messages::open(options.url.empty() ? messages::default_url() : options.url);
-    const bool recording = static_cast<bool>(options.save_axis_states);
+    const bool recording = static_cast<bool>(options.record_axis_state);
     HostOptions host_options = options.host;
-    host_options.record_axis_states = recording;
+    host_options.on_axis_state = options.record_axis_state;
     Host host(*lcm, program, host_options);
 
     const Clock::time_point started = Clock::now();
@@ -76,8 +78,8 @@ int run_host_command(const HostCommandOptions& options) {
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
 
-    if (recording) options.save_axis_states(host.axis_states());
-    const std::string report = host_report(program.file, host, result, seconds, recording);
+    if (recording && options.axis_states_done) options.axis_states_done();
+    const std::string report = host_report(options.program.string(), host, result, seconds, recording);
     if (options.report) {
         std::fputs(report.c_str(), options.report);
         std::fflush(options.report);

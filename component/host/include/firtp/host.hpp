@@ -1,9 +1,11 @@
-// Host controller stub (not real-time): streams a Program's blocks over LCM to the component with
-// flow control and go-back-N resending, publishes operator controls (feed override, hold, abort)
+// Host controller stub (not real-time): streams a program's blocks over LCM to the component with
+// flow control and go-back-N resending (reading them as they go: memory for the blocks not yet
+// acknowledged, not for the program), publishes operator controls (feed override, hold, abort)
 // and watches FIRTP_STATUS until the program is done, failed, lost or aborted.
 #pragma once
 
 #include <firtp/gcode.hpp>
+#include <firtp/trajectory.hpp>
 #include <firtp_lcm/axis_state_t.hpp>
 #include <firtp_lcm/status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -31,10 +33,24 @@ struct HostOptions {
     Clock::duration status_timeout = std::chrono::seconds(3);         // no status -> lost
     double feed_scale = 1.0;       // initial feed override
     double max_feed_scale = 1.5;   // set_feed_scale clamps to 0 .. this
-    bool record_axis_states = false;  // keep every FIRTP_AXIS_STATE message (for --csv)
+    bool record_axis_states = false;  // keep every FIRTP_AXIS_STATE message (axis_states())
+    // Called with every intact FIRTP_AXIS_STATE message as it arrives (in step()), kept or not.
+    std::function<void(const firtp_lcm::axis_state_t&)> on_axis_state;
     std::int64_t program_id = 0;      // 0: microseconds of the system clock
     std::function<Clock::time_point()> clock;  // empty: Clock::now (tests inject a fake clock)
 };
+
+// A program as the host sends it: its blocks read in order as flow control lets them go, its
+// events (a few a tool change, not a block) in memory.
+struct ProgramFeed {
+    std::size_t blocks = 0;            // how many a reader gives
+    std::vector<ProgramEvent> events;  // in order of before_block
+    // A new reader from the first block at each call: the host reads the program twice, once to
+    // check every block before anything is sent, once to send them.
+    std::function<std::unique_ptr<BlockPuller>()> read;
+};
+// A program in memory as a feed.
+ProgramFeed feed_of(std::shared_ptr<const Program> program);
 
 enum class Result {
     running,
@@ -80,7 +96,8 @@ public:
     // Subscribes to FIRTP_STATUS and FIRTP_AXIS_STATE on `lcm` (messages whose crc does not match
     // are dropped, as if lost); every message it publishes is sealed. Blocks that fail
     // messages::validate make the host fail at once, before anything is sent.
-    Host(lcm::LCM& lcm, const Program& program, HostOptions options = {});
+    Host(lcm::LCM& lcm, const ProgramFeed& program, HostOptions options = {});
+    Host(lcm::LCM& lcm, const Program& program, HostOptions options = {});  // a copy of it
     ~Host();
     Host(const Host&) = delete;
     Host& operator=(const Host&) = delete;

@@ -23,18 +23,22 @@ constexpr int host_exit_lost = 3;    // no status from the component for host.st
 
 struct HostCommandOptions {
     std::filesystem::path program;              // PROGRAM.ngc
+    // The program as read elsewhere (`firtp host`: spooled to a temporary file, so that memory does
+    // not grow with it); empty: read_gcode(program, machine), kept in memory.
+    std::function<ProgramFeed()> read_program;
     MachineConfig machine = default_machine();  // feed caps for the G-code reader
     std::string url;                            // LCM URL; "" -> messages::default_url()
     HostOptions host;                           // timeouts, initial and maximum feed override
     UiOptions ui;                               // stdin keys / commands, stderr progress
     std::FILE* report = stdout;                 // final report
     std::chrono::milliseconds quit_grace{1000}; // 'q': wait this long for the abort to be confirmed
-    // Set to record every FIRTP_AXIS_STATE message (e.g. for --csv): called once at the end, in
-    // arrival order, whatever the result.
-    std::function<void(const std::vector<firtp_lcm::axis_state_t>&)> save_axis_states;
+    // Set to record every FIRTP_AXIS_STATE message (e.g. for --csv): each as it arrives, in arrival
+    // order (nothing is kept here); then axis_states_done, if set, once at the end whatever the result.
+    std::function<void(const firtp_lcm::axis_state_t&)> record_axis_state;
+    std::function<void()> axis_states_done;
 };
 
-// Returns one of the exit statuses above. Throws what read_gcode (GcodeError) and
+// Returns one of the exit statuses above. Throws what read_gcode or read_program (GcodeError) and
 // messages::open (std::runtime_error) throw: bad program, no LCM transport.
 int run_host_command(const HostCommandOptions& options);
 
