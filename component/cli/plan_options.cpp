@@ -26,7 +26,7 @@ po::options_description machine_flags() {
     po::options_description d("Machine", 100, 50);
     d.add_options()
         ("ini", po::value<std::string>()->value_name("FILE"),
-         "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]MAX_LINEAR_VELOCITY, "
+         "LinuxCNC-style INI file describing the machine: [EMCMOT]SERVO_PERIOD, [TRAJ]COORDINATES MAX_LINEAR_VELOCITY, "
          "[AXIS_<L>]MAX_VELOCITY/MAX_ACCELERATION/MAX_JERK, [DISPLAY]MAX_FEED_OVERRIDE, [FIRTP]STAGES T1..T4 "
          "MODES TOLERANCE TOLERANCE_MEANING ARC_CHORD_TOLERANCE RATE_RESERVE MAX_PROGRAM_BLOCKS. Without it: X Y Z at 300 mm/s, 5000 mm/s^2, 100000 mm/s^3, 1 ms period, "
          "every move smoothed at those limits, " FIRTP_DEFAULT_TOLERANCE_TEXT " mm tolerance")

@@ -3,6 +3,7 @@
 #include "component_options.hpp"
 #include "gnuplot_pipe.hpp"
 #include "number_text.hpp"
+#include "output_files.hpp"
 #include "plan_checks.hpp"
 #include "plan_outputs.hpp"
 #include "plan_run.hpp"
@@ -67,8 +68,11 @@ int run_command(std::span<const std::string> args) {
     PlanRun run = prepare_spooled_plan(options.plan);
 
     const auto lcm = messages::open(options.lcm_url.empty() ? "memq://" : options.lcm_url);
+    // The log too is written beside its target and renamed when the run is over: a program the
+    // planner refuses half-way leaves nothing behind.
+    OutputFiles log_file;
     std::optional<LcmRecorder> recorder;
-    if (options.lcm_log) recorder.emplace(*lcm, *options.lcm_log);
+    if (options.lcm_log) recorder.emplace(*lcm, log_file.create(*options.lcm_log));
     const InProcessSettings settings;
     firtp::InProcessComponent component(*lcm, run.machine, options.module.value_or(firtp::default_module_path()), settings);
     // The machine first in the log, so that `firtp replay` needs nothing else.
@@ -94,6 +98,8 @@ int run_command(std::span<const std::string> args) {
     sink.finish();
 
     const std::vector<std::filesystem::path> written = outputs.finish(run, sink.plot(), gnuplot);
+    recorder.reset();
+    log_file.commit();
     print_summary(std::cout, run, options.plan.program.filename().string(), written);
     const host::Statistics stats = chain.host().statistics();
     std::cout << "chain        " << run.blocks << " blocks over LCM (" << stats.blocks_published << " published, "

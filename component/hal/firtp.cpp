@@ -16,9 +16,9 @@
 // follow firtp.axis.N.pos-fb; when it rises, and at the first period, the component starts from
 // the feedback, and brakes within the limits from firtp.axis.N.vel-fb if the axes move (a restart
 // while moving). Connect the feedback as LinuxCNC's joint.N.motor-pos-fb; in a simulation, net
-// pos-cmd to pos-fb. Without t1 every move is smoothed at the limits max_acceleration (needed for
-// every axis) and max_jerk; with t1 (and t2.. for more stages) the paper's fixed chain smooths
-// every block instead.
+// pos-cmd to pos-fb. Without t1 every move is smoothed at the limits max_acceleration (an axis
+// without one is absent: its moves are refused) and max_jerk; with t1 (and t2.. for more
+// stages) the paper's fixed chain smooths every block instead.
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
@@ -367,10 +367,12 @@ firtp::ComponentSettings settings_from_parameters() {
     read_limits("max_velocity", max_velocity, &firtp::AxisLimits::max_velocity, s.planner.limits);
     read_limits("max_acceleration", max_acceleration, &firtp::AxisLimits::max_acceleration, s.planner.limits);
     read_limits("max_jerk", max_jerk, &firtp::AxisLimits::max_jerk, s.planner.limits);
-    if (!s.planner.fixed_chain)
-        for (int a = 0; a < axes; ++a)
-            if (!(s.planner.limits.axis[a].max_acceleration > 0.0))
-                refuse("max_acceleration", max_acceleration, "needs a limit for every axis (or give t1: the fixed chain)");
+    // An axis without an acceleration limit is one the machine does not have (a lathe's Y, from
+    // [TRAJ]COORDINATES): blocks that move it are refused. At least one axis needs a limit.
+    if (!s.planner.fixed_chain &&
+        std::none_of(s.planner.limits.axis.begin(), s.planner.limits.axis.begin() + axes,
+                     [](const firtp::AxisLimits& l) { return l.max_acceleration > 0.0; }))
+        refuse("max_acceleration", max_acceleration, "needs a limit for the machine's axes (or give t1: the fixed chain)");
     s.axes = axes;
     if (queue < 2) refuse("queue", std::to_string(queue).c_str(), "must be at least 2");
     s.planner.queue_capacity = static_cast<std::size_t>(queue);

@@ -87,6 +87,25 @@ TEST(BadInput, ProgramBeyondMaxProgramBlocksNamesTheLine) {
     EXPECT_EQ(dir.names(), (std::set<std::string>{"machine.ini", "prog.ngc"}));
 }
 
+// A lathe ([TRAJ]COORDINATES = X Z) has no Y: a program that moves Y is refused at that line by
+// `plan` and by `run`, whose component and LCM log are under way by then; nothing is left behind.
+TEST(BadInput, MoveOfAnAxisTheMachineDoesNotHaveNamesTheLine) {
+    for (const char* command : {"plan", "run"}) {
+        SCOPED_TRACE(command);
+        TempDir dir;
+        write_file(dir / "machine.ini", "[TRAJ]\nCOORDINATES = X Z\n[AXIS_X]\nMAX_ACCELERATION = 1000\n"
+                                        "[AXIS_Z]\nMAX_ACCELERATION = 1000\n");
+        write_file(dir / "prog.ngc", "G21 G90 G64 P0.1\nF600\nG1 X2\nG1 Z-1\nG1 Y1\nM2\n");
+        std::vector<std::string> args{command, (dir / "prog.ngc").string(), "--ini", (dir / "machine.ini").string(),
+                                      "--csv", (dir / "out.csv").string(), "--json", (dir / "out.json").string()};
+        if (std::string(command) == "run") args.insert(args.end(), {"--lcm-log", (dir / "out.lcmlog").string()});
+        const Outcome r = run_firtp(args);
+        EXPECT_EQ(r.exit_code, 1);
+        EXPECT_NE(r.err.find("prog.ngc: line 5: moves Y, an axis the machine does not have"), std::string::npos) << r.err;
+        EXPECT_EQ(dir.names(), (std::set<std::string>{"machine.ini", "prog.ngc"}));
+    }
+}
+
 TEST(BadInput, NegativeFlagValueNamesTheFlag) {
     const Failure f = plan_in_dir(good_program, {"--t1", "-3"});
     EXPECT_EQ(f.outcome.exit_code, 2);

@@ -50,6 +50,13 @@ TEST(MachineRefusals, FilterWindowTooLongNamesTheLimitThatMakesIt) {
     EXPECT_EQ(load_error("[EMCMOT]\nSERVO_PERIOD = 1000\n"), "no error");
 }
 
+TEST(MachineRefusals, CoordinatesNameAxisLettersWithAccelerations) {
+    EXPECT_EQ(load_error("[TRAJ]\nCOORDINATES = X Y Q\n"),
+              "mill.ini:2: [TRAJ]COORDINATES: 'Q' is not an axis letter (X Y Z A B C U V W)");
+    EXPECT_EQ(load_error("[TRAJ]\nCOORDINATES = X Y Z A\n"),
+              "mill.ini:2: [TRAJ]COORDINATES: names A but [AXIS_A] gives no MAX_ACCELERATION");
+}
+
 TEST(MachineRefusals, StageNeitherGivenNorDerivableNamesStages) {
     const std::string no_jerk = "[AXIS_X]\nMAX_JERK = 0\n[AXIS_Y]\nMAX_JERK = 0\n[AXIS_Z]\nMAX_JERK = 0\n";
     EXPECT_EQ(load_error(no_jerk + "[FIRTP]\nSTAGES = 2\nT1 = 0.06\n"),

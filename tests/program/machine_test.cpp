@@ -83,6 +83,23 @@ TEST(Machine, MaxLinearJerkBoundsTheLinearAxes) {
     EXPECT_EQ(zero.limits.axis[0].max_jerk, 50000.0);  // 0: not set
 }
 
+// [TRAJ]COORDINATES names the axes, as LinuxCNC reads it: a lathe's "X Z" has no Y (a move of it is
+// refused when planned), whatever the built-in machine has; a letter twice is a gantry, one axis.
+TEST(Machine, CoordinatesNameTheAxes) {
+    const MachineConfig lathe = firtp::load_machine(IniFile::parse(
+        "[TRAJ]\nCOORDINATES = X Z\n[AXIS_X]\nMAX_ACCELERATION = 1000\n[AXIS_Z]\nMAX_ACCELERATION = 2000\n", "lathe.ini"));
+    EXPECT_EQ(lathe.limits.axes, 3);
+    EXPECT_EQ(lathe.limits.axis[0].max_acceleration, 1000.0);
+    EXPECT_EQ(lathe.limits.axis[1].max_acceleration, 0.0);
+    EXPECT_EQ(lathe.limits.axis[1].max_velocity, 0.0);
+    EXPECT_EQ(lathe.limits.axis[2].max_acceleration, 2000.0);
+    const MachineConfig gantry = firtp::load_machine(IniFile::parse("[TRAJ]\nCOORDINATES = XYYZ\n", "gantry.ini"));
+    EXPECT_EQ(gantry.limits.axes, 3);
+    for (int a = 0; a < 3; ++a) EXPECT_GT(gantry.limits.axis[a].max_acceleration, 0.0) << a;
+    const MachineConfig mill = firtp::load_machine(IniFile::parse("[AXIS_X]\nMAX_ACCELERATION = 1000\n", "mill.ini"));
+    EXPECT_GT(mill.limits.axis[1].max_acceleration, 0.0);  // without COORDINATES: the built-in X Y Z
+}
+
 // Without T1 or MODES the machine smooths at its limits; filter_times() (the fixed chain's, when
 // only some times are given) still derives the rest from the limits.
 TEST(Machine, DefaultMachineSmoothsAtItsLimits) {

@@ -4,6 +4,7 @@
 #include <firtp/types.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -72,6 +73,33 @@ void check_axis_keys(const IniFile& ini, const std::string& section) {
     }
 }
 
+// [TRAJ]COORDINATES, as LinuxCNC reads it, names the machine's axes (a letter twice is a gantry:
+// one axis here); nullptr when the INI has none.
+const IniFile::Entry* coordinates(const IniFile& ini, std::array<bool, max_axes>& named) {
+    const IniFile::Entry* e = ini.find("TRAJ", "COORDINATES");
+    if (e == nullptr) return nullptr;
+    named.fill(false);
+    for (const char c : e->value) {
+        if (std::isspace(static_cast<unsigned char>(c))) continue;
+        const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        const auto at = std::find(axis_letters.begin(), axis_letters.end(), upper);
+        if (at == axis_letters.end()) fail(ini, *e, cat("'", std::string(1, c), "' is not an axis letter (X Y Z A B C U V W)"));
+        named[static_cast<std::size_t>(at - axis_letters.begin())] = true;
+    }
+    return e;
+}
+
+// Any axis COORDINATES does not name is one the machine does not have: its moves are refused when
+// planned (Planner::add), whatever [AXIS_L] or the built-in machine says.
+void read_coordinates(const IniFile& ini, MachineConfig& m) {
+    std::array<bool, max_axes> named{};
+    if (coordinates(ini, named) == nullptr) return;
+    for (int i = 0; i < max_axes; ++i) {
+        if (named[static_cast<std::size_t>(i)]) m.limits.axes = std::max(m.limits.axes, i + 1);
+        else m.limits.axis[i] = AxisLimits{0.0, 0.0, 0.0};
+    }
+}
+
 void read_axes(const IniFile& ini, MachineConfig& m) {
     if (const auto v = positive(ini, "TRAJ", "MAX_LINEAR_VELOCITY")) m.limits.max_linear_velocity = *v;
     double linear_jerk = 0.0;  // 0: not set
@@ -87,6 +115,7 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
         if (const auto v = positive(ini, section, "MAX_ACCELERATION")) axis.max_acceleration = *v;
         if (const auto v = positive(ini, section, "MAX_JERK", true)) axis.max_jerk = *v, own_jerk[i] = true;  // 0 = not limited
     }
+    read_coordinates(ini, m);
     // LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK beside [AXIS_L]MAX_JERK; so do
     // firtp and firtp_tp (tp_ini.cpp): every linear axis at most that (0: not set).
     if (linear_jerk > 0.0)
@@ -229,6 +258,12 @@ void check_filters(const IniFile& ini, const MachineConfig& m) {
 // Limit-driven smoothing needs each axis' acceleration limit. An axis without an [AXIS_] section
 // is one the machine does not have: a move of it is refused when planned.
 void check_accelerations(const IniFile& ini, const MachineConfig& m) {
+    std::array<bool, max_axes> named{};
+    if (const IniFile::Entry* e = coordinates(ini, named))
+        for (int a = 0; a < max_axes; ++a)
+            if (named[static_cast<std::size_t>(a)] && !(m.limits.axis[a].max_acceleration > 0.0))
+                fail(ini, *e, cat("names ", std::string(1, axis_letters[a]), " but [AXIS_", std::string(1, axis_letters[a]),
+                                  "] gives no MAX_ACCELERATION"));
     bool any = false;
     for (int a = 0; a < m.limits.axes; ++a) {
         const std::string section = std::string("AXIS_") + axis_letters[a];
