@@ -24,6 +24,7 @@ RunChain::RunChain(lcm::LCM& lcm, InProcessComponent& component, const PlanRun& 
     : lcm_(lcm),
       component_(component),
       period_(run.parameters.period),
+      moves_(run.blocks > 0),
       samples_(run.parameters.period, std::move(received)),
       host_(lcm, spooled_feed(run.spool, run.program.events), receiving(std::move(host_options), samples_)),
       progress_("run", run.blocks) {}
@@ -49,7 +50,15 @@ void RunChain::finish() {
     if (result_ != host::Result::done)
         throw std::runtime_error(cat("run: the program did not complete (", host::to_string(result_), "): ",
                                      host_.error()));
-    samples_.finish();
+    if (moves_) return samples_.finish();
+    // Nothing to send: one period of the component for its state at rest.
+    for (int i = 0; i < 2; ++i) {
+        component_.step();
+        component_.poll();
+        while (lcm_.handleTimeout(0) > 0) {
+        }
+    }
+    samples_.finish_at_rest();
 }
 
 void PlanDifference::add(const AxisVector& x, std::deque<AxisVector>& mine, std::deque<AxisVector>& theirs,

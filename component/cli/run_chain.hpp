@@ -39,6 +39,7 @@ private:
     lcm::LCM& lcm_;
     InProcessComponent& component_;
     double period_;
+    bool moves_;  // the program has blocks: the states must show one moving (plan samples no motion too)
     AxisStateSamples samples_;
     host::Host host_;
     ProgressLine progress_;

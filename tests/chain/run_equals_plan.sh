@@ -7,8 +7,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 check() {
   local program=$1; shift
-  "$firtp" plan "$examples/$program" "$@" --csv "$work/plan.csv" > /dev/null
-  "$firtp" run "$examples/$program" "$@" --csv "$work/run.csv" > "$work/run.log"
+  [[ $program == /* ]] || program=$examples/$program
+  "$firtp" plan "$program" "$@" --csv "$work/plan.csv" > /dev/null
+  "$firtp" run "$program" "$@" --csv "$work/run.csv" > "$work/run.log"
   python3 - "$work/plan.csv" "$work/run.csv" "$program" <<'PY'
 import csv, sys
 plan, run = (list(csv.reader(open(f))) for f in sys.argv[1:3])
@@ -23,6 +24,9 @@ check corner90.ngc
 check steps.ngc
 check steps.ngc --tolerance-meaning contour --t1 0.03 --t2 0.011
 check corner90.ngc --ini "$(dirname "$0")/override.ini"
+# A program without motion (a subroutine file, as LinuxCNC's g881.ngc): its one sample at rest.
+printf '(defines a subroutine, moves nothing)\no<touch> sub\nG1 X1 F100\no<touch> endsub\nM2\n' > "$work/still.ngc"
+check "$work/still.ngc"
 # The same samples draw the same picture, the corner zooms (paired with the reference plan's
 # corner reports) included.
 if command -v gnuplot > /dev/null; then

@@ -86,6 +86,15 @@ void AxisStateSamples::finish() {
     held_.clear();  // the final rest: its first sample went out already
 }
 
+void AxisStateSamples::finish_at_rest() {
+    if (started_) return finish();
+    if (!before_) throw std::runtime_error("no axis state came: nothing was recorded");
+    tick0_ = before_->tick;
+    AxisState s;
+    for (int a = 0; a < max_axes; ++a) s.position[a] = before_->position[a];
+    emit(s);
+}
+
 std::vector<AxisState> samples_from_axis_states(const std::vector<firtp_lcm::axis_state_t>& states, double period) {
     std::vector<AxisState> samples;
     AxisStateSamples stream(period, [&](const AxisState& s) { samples.push_back(s); });

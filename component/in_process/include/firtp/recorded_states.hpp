@@ -26,6 +26,9 @@ public:
     // The end: the rest held back is dropped but for its first sample. Throws std::runtime_error
     // when no block ever moved.
     void finish();
+    // The end of a program without motion (a subroutine file): its one sample is the newest state
+    // at rest, at time 0, as a plan of it has. Throws std::runtime_error when no state came.
+    void finish_at_rest();
     std::size_t count() const { return count_; }  // samples given out
 
 private:
