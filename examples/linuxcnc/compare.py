@@ -2,7 +2,7 @@
 """Cycle time of five programs under LinuxCNC's planners and firtp_tp, in one run series, side by side.
 
     examples/linuxcnc/compare.py [--master TREE] [--module build/linuxcnc/firtp_tp.so]
-        [--check-tool build/bin/firtp-tp-check] [--readme examples/linuxcnc/README.md]
+        [--check-tool build/bin/firtp-tp-check] [--readme README.md [--details docs/BENCHMARKS.md]]
 
 The programs (issue 13): examples/diamond.ngc (F15000 G64 P0.5), corner90.ngc (F3000 G64 P0.1),
 polygon360.ngc (a closed 360-gon, R20, 0.35 mm chords, F15000 G64 P0.5 Q0), cam_contour.ngc and
@@ -28,7 +28,8 @@ S-curve 1e5, stock); on the diamond and the 90° corner the share of P and of th
 firtp_tp uses), notes (runs that failed, rest off the end, go beyond G64 P or above their jerk
 limit), then the detail table of every run and firtp_tp's own pins. Without --master
 (or when TREE is not built) the S-curve columns say "-" and the second target is not judged. With
---readme the tables replace those between the markers in that file. One HAL session at a time; about
+--readme the tables replace those between the markers in that file (with --details FILE, the
+detail tables go between the markers of FILE instead). One HAL session at a time; about
 5 minutes with --master, 2 without.
 """
 import argparse
@@ -171,6 +172,9 @@ def main():
     parser.add_argument("--module", help="this build's firtp_tp.so (placed in LinuxCNC's module directory for the runs)")
     parser.add_argument("--check-tool", help="firtp-tp-check")
     parser.add_argument("--readme", help="write the tables between the markers in this file")
+    parser.add_argument("--details", metavar="FILE",
+                        help="with --readme: the detail tables (every run, firtp_tp's pins) go between the markers "
+                             "in FILE instead (docs/BENCHMARKS.md), the README keeps the summary")
     parser.add_argument("--no-detail", action="store_true", help="skip the paper's-filters run and the detail tables")
     a = parser.parse_args()
 
@@ -254,22 +258,30 @@ def main():
     text += main_table + ["", "Targets of issue 13:", ""] + checks
     if notes:
         text += ["", "Notes:", ""] + ["- " + n for n in notes]
+    details = []
     if not a.no_detail:
-        text += ["", "Every run:", ""] + detail
-        text += ["", "firtp_tp's own pins (rtapi_get_time, ns) on the same runs:", "",
-                 "| program | planner | tpAdd* median / max (adds) | tpRunCycle median / p99 / max | planning p99 / max "
-                 "| most blocks planned in a period |", "|---|---|---|---|---|---|"] + extra
+        details += ["Every run (%s):" % time.strftime("%Y-%m-%d"), ""] + detail
+        details += ["", "firtp_tp's own pins (rtapi_get_time, ns) on the same runs:", "",
+                    "| program | planner | tpAdd* median / max (adds) | tpRunCycle median / p99 / max | planning p99 / max "
+                    "| most blocks planned in a period |", "|---|---|---|---|---|---|"] + extra
+    if details and not a.details:
+        text += [""] + details
     table = "\n".join(text)
     print()
     print(table)
-    if a.readme:
-        old = open(a.readme).read()
-        new, n = re.subn(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: BEGIN + "\n" + table + "\n" + END, old,
+    if a.details:
+        print()
+        print("\n".join(details))
+    for path, body in ((a.readme, table), (a.details, "\n".join(details))):
+        if not path or (path == a.details and not details):
+            continue
+        old = open(path).read()
+        new, n = re.subn(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: BEGIN + "\n" + body + "\n" + END, old,
                          flags=re.S)
         if n != 1:
-            print("%s has no %s ... %s markers" % (a.readme, BEGIN, END))
+            print("%s has no %s ... %s markers" % (path, BEGIN, END))
             return 1
-        open(a.readme, "w").write(new)
+        open(path, "w").write(new)
     return 0
 
 
