@@ -163,10 +163,10 @@ Lookahead::Step Lookahead::entry_step(std::size_t i) const {
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     const Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
-    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
+    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start step
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
-    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2};  // the corner, one speed both sides
+    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
 }
 
 double Lookahead::entry_width(std::size_t i, double a) const {
@@ -180,8 +180,8 @@ double Lookahead::entry_width(std::size_t i, double a) const {
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2};  // the stop step
-    return {b * s.turn_alpha, s.turn.direction, s.junction.t2};
+    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop step
+    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box};
 }
 
 // ---- Geometry and caps -------------------------------------------------------------------------
@@ -294,6 +294,7 @@ void Lookahead::junction_caps(std::size_t i) {
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     s.turn = make_turn(s.u, seg(i + 1).u, limits_);
+    s.turn_box = rules_.unit_box(s.turn.direction);
     s.learned_cap = infinity;
     s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal || seg(i + 1).dwell > 0.0
                  ? Kind::stop
@@ -320,6 +321,7 @@ ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
     in.length = seg_length(i);
     in.alpha = s.alpha;
     in.u = s.u;
+    in.u_unit_box = s.u_box;
     in.in = entry_shape(i, a);
     in.out = exit_shape(i, b);
     const double t2 = rules_.t2;
@@ -534,6 +536,7 @@ Result Lookahead::add(const Block& block) {
     s.start = goal_;
     s.end = block.target;
     s.u = delta / length;
+    s.u_box = rules_.unit_box(s.u);
     s.length = length;
     const double cap = velocity_cap(limits_, s.u);
     s.feed = std::min(block.feed, cap);
@@ -629,6 +632,7 @@ void Lookahead::place_hold_stop() {
             s.exact_stop = false;
             s.brake = true;
             s.turn = make_turn(s.u, s.u, limits_);
+            s.turn_box = rules_.unit_box(s.turn.direction);
             s.learned_cap = infinity;
             insert_after(i, rest);
             junction_caps(i);

@@ -88,6 +88,7 @@ private:
         double feed = 0.0;       // at 100 %, capped by the axis velocity limits along u
         double feed_max = 0.0;   // at the highest override
         double alpha = 0.0;      // T1 per unit of speed change along u (in its regime)
+        double u_box = -1.0;     // rules_.unit_box(u): the spacing rules' jerk gaps (any regime)
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
@@ -106,6 +107,7 @@ private:
         std::int64_t line = 0;
         // The junction after it (valid once the next segment exists; the last one ends in a stop).
         Turn turn;
+        double turn_box = -1.0;    // rules_.unit_box(turn.direction)
         Kind kind = Kind::stop;
         Regime junction;           // the junction step's smoothing
         double turn_alpha = 0.0;   // its T1 per unit of corner speed, in that regime
