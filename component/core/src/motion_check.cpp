@@ -191,6 +191,9 @@ void index_legs(std::span<TimedLeg> legs) {
 
 namespace {
 
+// The kernel's step response at x is exactly 0, with its derivatives (Kernel::step).
+bool not_begun(const Kernel& k, double x) { return k.chain == nullptr && k.a > 0.0 && x <= kernel_detail::started_after; }
+
 // relative_state's sum; with Derivatives false only the position (the same arithmetic).
 template <bool Derivatives>
 void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, AxisState& s) {
@@ -218,6 +221,9 @@ void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, Axis
     for (std::size_t k = lo; k < hi; ++k) {
         const TimedLeg& leg = legs[k];
         if (!(leg.tv > 0.0)) continue;
+        // A leg after the corner that has not begun adds exactly 0 (at most a zero's sign, which
+        // no distance sees).
+        if (k > corner && not_begun(leg.rising, t - leg.rise) && not_begun(leg.falling, t - leg.rise - leg.fall)) continue;
         const double sign = k <= corner ? 1.0 : 0.0;
         if constexpr (Derivatives) {
             const StepSample up = leg.rising.step(t - leg.rise);
