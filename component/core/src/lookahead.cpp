@@ -342,33 +342,48 @@ bool Lookahead::fits(std::size_t i, double a, double p, double b) const {
 // its box within each leg (tile), and the corner within its tolerance by estimate: the step's
 // pull towards the inside of the turn, and the run's jerk stage smoothing the curve the steps
 // trace (a T2 moving average of a parabola: a T2^2 / 24). The check measures it exactly.
-bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
-    const Segment& s = seg(i);
-    const Segment& n = seg(i + 1);
+Lookahead::DenseJunction Lookahead::dense_junction(std::size_t i) const {
+    DenseJunction j;
+    j.i = i;
+    j.s = &seg(i);
+    j.n = &seg(i + 1);
+    j.length = seg_length(i);
+    j.bounded = !(j.s->turn.beta < straight_angle || !std::isfinite(j.s->tolerance));
+    if (j.bounded) {
+        j.m = unit(j.s->u + j.n->u);
+        j.epsilon = j.s->tolerance;
+        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) j.epsilon /= std::cos(0.5 * j.s->turn.beta);
+    }
+    return j;
+}
+
+bool Lookahead::dense_ok(const DenseJunction& j, double b, double a) const {
+    const std::size_t i = j.i;
+    const Segment& s = *j.s;
+    const Segment& n = *j.n;
     if (std::max(a, b) > s.learned_cap) return false;
     const AxisVector dv = a * n.u - b * s.u;
     const double t1 = box(dv, s.junction);
-    const double leg_s = b > 0.0 ? seg_length(i) / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
+    const double leg_s = b > 0.0 ? j.length / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
     if (t1 > leg_s || t1 > leg_n) return false;
     // Kernels start in the steps' order: a step wider than the one entering the block waits.
     if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width(i, b))) return false;
     // ... and not before now (a hold brakes in the block under way).
     if (i == 0 && frozen_.moving && frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return false;
-    if (s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) return true;
-    const AxisVector m = unit(s.u + n.u);
+    if (!j.bounded) return true;
+    const AxisVector& m = j.m;
     const double inward = (dv - m * dv.dot(m)).norm();
     const double t2 = s.junction.t2;
     double estimate = inward * two_stage(t1, t2).lead();
     const double legs = 0.5 * (std::isfinite(leg_s) ? leg_s : 0.0) + 0.5 * (std::isfinite(leg_n) ? leg_n : 0.0);
     if (legs > 0.0) estimate += inward / legs * t2 * t2 / 24.0;
     estimate += chord_margin(t1 > 0.0 ? dv.norm() / std::max(t1, t2) : 0.0, jerk_norm_, parameters_.period);
-    double epsilon = s.tolerance;
-    if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
-    return estimate <= epsilon;
+    return estimate <= j.epsilon;
 }
 
 double Lookahead::dense_exit_max(std::size_t i, double next_entry_max) const {
-    return highest([&](double b) { return dense_ok(i, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
+    const DenseJunction j = dense_junction(i);
+    return highest([&](double b) { return dense_ok(j, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
 }
 
 double Lookahead::max_entry(std::size_t i, double exit_max) const {
@@ -431,7 +446,8 @@ double Lookahead::entry_for(std::size_t i) const {
     // it must.
     const Segment& s = seg(i);
     const double b = prev.b;
-    auto ok = [&](double a) { return dense_ok(i - 1, b, a); };
+    const DenseJunction j = dense_junction(i - 1);
+    auto ok = [&](double a) { return dense_ok(j, b, a); };
     const double hi = std::min(s.brake ? 0.0 : target(i), s.entry_max), lo = std::min(b, s.entry_max);
     if (hi >= lo) return ok(lo) ? highest(ok, lo, hi) : lo;
     const double v = lowest(ok, hi, lo);

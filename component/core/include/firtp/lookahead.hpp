@@ -161,8 +161,13 @@ private:
         double rest = 0.0;       // at rest: the next start step comes at least this long after it
     };
 
-    Segment& seg(std::size_t i) { return segments_[(head_ + i) % segments_.size()]; }
-    const Segment& seg(std::size_t i) const { return segments_[(head_ + i) % segments_.size()]; }
+    // i <= count_ <= the ring's size: one wrap at most (no division: seg() is called millions of times).
+    std::size_t ring(std::size_t i) const {
+        const std::size_t k = head_ + i;
+        return k < segments_.size() ? k : k - segments_.size();
+    }
+    Segment& seg(std::size_t i) { return segments_[ring(i)]; }
+    const Segment& seg(std::size_t i) const { return segments_[ring(i)]; }
     double seg_length(std::size_t i) const { return i == 0 ? seg(0).length - frozen_.consumed : seg(i).length; }
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
@@ -199,7 +204,18 @@ private:
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
     double max_entry(std::size_t i, double exit_max) const;
-    bool dense_ok(std::size_t i, double b, double a) const;  // the dense junction after i
+    // What dense_ok needs of junction i that does not depend on the speeds (found once a search).
+    struct DenseJunction {
+        std::size_t i = 0;
+        const Segment* s = nullptr;
+        const Segment* n = nullptr;
+        double length = 0.0;      // seg_length(i)
+        bool bounded = false;     // a turn with a tolerance: the estimate is checked
+        AxisVector m = AxisVector::Zero();  // the turn's bisector, unit(u + u')
+        double epsilon = 0.0;     // the tolerance the estimate is held to
+    };
+    DenseJunction dense_junction(std::size_t i) const;
+    bool dense_ok(const DenseJunction& j, double b, double a) const;  // the dense junction after j.i
     double dense_exit_max(std::size_t i, double next_entry_max) const;
     ProfileInput profile_input(std::size_t i, double a, double b) const;
     bool fits(std::size_t i, double a, double p, double b) const;
