@@ -194,6 +194,49 @@ namespace {
 // The kernel's step response at x is exactly 0, with its derivatives (Kernel::step).
 bool not_begun(const Kernel& k, double x) { return k.chain == nullptr && k.a > 0.0 && x <= kernel_detail::started_after; }
 
+// sum_legs' sum over the legs [lo, hi) that may move at t, into s; Axes > 0: a fixed count (= axes),
+// summed in locals (the same additions in the same order).
+template <bool Derivatives, int Axes>
+void add_moving(std::span<const TimedLeg> legs, std::size_t corner, double t, std::size_t lo, std::size_t hi, int axes,
+                AxisState& s) {
+    const int n = Axes > 0 ? Axes : axes;
+    double p_sum[max_axes], v_sum[max_axes], a_sum[max_axes], j_sum[max_axes];
+    for (int i = 0; i < n; ++i) {
+        p_sum[i] = s.position[i];
+        if constexpr (Derivatives) v_sum[i] = s.velocity[i], a_sum[i] = s.acceleration[i], j_sum[i] = s.jerk[i];
+    }
+    for (std::size_t k = lo; k < hi; ++k) {
+        const TimedLeg& leg = legs[k];
+        if (!(leg.tv > 0.0)) continue;
+        // A leg after the corner that has not begun adds exactly 0 (at most a zero's sign, which
+        // no distance sees).
+        if (k > corner && not_begun(leg.rising, t - leg.rise) && not_begun(leg.falling, t - leg.rise - leg.fall)) continue;
+        const double sign = k <= corner ? 1.0 : 0.0;
+        if constexpr (Derivatives) {
+            const StepSample up = leg.rising.step(t - leg.rise);
+            const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
+            const double p = (up.position - down.position) / leg.tv - sign;
+            const double v = (up.velocity - down.velocity) / leg.tv;
+            const double a = (up.acceleration - down.acceleration) / leg.tv;
+            const double j = (up.jerk - down.jerk) / leg.tv;
+            for (int i = 0; i < n; ++i) {
+                const double d = leg.delta[i];
+                p_sum[i] += d * p;
+                v_sum[i] += d * v;
+                a_sum[i] += d * a;
+                j_sum[i] += d * j;
+            }
+        } else {
+            const double p = (leg.rising.step_position(t - leg.rise) - leg.falling.step_position(t - leg.rise - leg.fall)) / leg.tv - sign;
+            for (int i = 0; i < n; ++i) p_sum[i] += leg.delta[i] * p;
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        s.position[i] = p_sum[i];
+        if constexpr (Derivatives) s.velocity[i] = v_sum[i], s.acceleration[i] = a_sum[i], s.jerk[i] = j_sum[i];
+    }
+}
+
 // relative_state's sum; with Derivatives false only the position (the same arithmetic).
 template <bool Derivatives>
 void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, AxisState& s) {
@@ -217,33 +260,9 @@ void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, Axis
         if (lo > corner + 1) s.position += done - corner_end;     // legs after the corner that ended
         if (hi <= corner) s.position -= corner_end - waiting;     // legs up to the corner not begun
     }
-    const int axes = legs.front().axes;  // the other axes' sums stay 0
-    for (std::size_t k = lo; k < hi; ++k) {
-        const TimedLeg& leg = legs[k];
-        if (!(leg.tv > 0.0)) continue;
-        // A leg after the corner that has not begun adds exactly 0 (at most a zero's sign, which
-        // no distance sees).
-        if (k > corner && not_begun(leg.rising, t - leg.rise) && not_begun(leg.falling, t - leg.rise - leg.fall)) continue;
-        const double sign = k <= corner ? 1.0 : 0.0;
-        if constexpr (Derivatives) {
-            const StepSample up = leg.rising.step(t - leg.rise);
-            const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
-            const double p = (up.position - down.position) / leg.tv - sign;
-            const double v = (up.velocity - down.velocity) / leg.tv;
-            const double a = (up.acceleration - down.acceleration) / leg.tv;
-            const double j = (up.jerk - down.jerk) / leg.tv;
-            for (int i = 0; i < axes; ++i) {
-                const double d = leg.delta[i];
-                s.position[i] += d * p;
-                s.velocity[i] += d * v;
-                s.acceleration[i] += d * a;
-                s.jerk[i] += d * j;
-            }
-        } else {
-            const double p = (leg.rising.step_position(t - leg.rise) - leg.falling.step_position(t - leg.rise - leg.fall)) / leg.tv - sign;
-            for (int i = 0; i < axes; ++i) s.position[i] += leg.delta[i] * p;
-        }
-    }
+    // The other axes' sums stay 0. Three axes (the common machine) with a loop the compiler unrolls.
+    if (legs.front().axes == 3) add_moving<Derivatives, 3>(legs, corner, t, lo, hi, 3, s);
+    else add_moving<Derivatives, 0>(legs, corner, t, lo, hi, legs.front().axes, s);
 }
 
 }  // namespace
