@@ -315,28 +315,54 @@ void Lookahead::link(std::size_t i) {
 
 // ---- The profile of one segment ----------------------------------------------------------------
 
-ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
-    const Segment& s = seg(i);
-    ProfileInput in;
-    in.length = seg_length(i);
-    in.alpha = s.alpha;
-    in.u = s.u;
-    in.u_unit_box = s.u_box;
-    in.in = entry_shape(i, a);
-    in.out = exit_shape(i, b);
-    const double t2 = rules_.t2;
+Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(lookahead), i_(i) {
+    const Segment& s = la_.seg(i);
+    in_.length = la_.seg_length(i);
+    in_.alpha = s.alpha;
+    in_.u = s.u;
+    in_.u_unit_box = s.u_box;
+    const bool moving = i == 0 && la_.frozen_.moving;
+    // The entry step (entry_shape()): the frozen one, a start, a corner at one speed, or a dense
+    // junction (speed and turn at once: found at each speed).
+    if (moving) {
+        in_.in = la_.frozen_.step.shape();
+        entry_fixed_ = true;
+    } else if (la_.entry_is_stop(i)) {
+        in_.in = {0.0, s.u, s.regime.t2, s.u_box};
+        entry_scaled_ = true, in_scale_ = s.alpha;
+    } else if (la_.seg(i - 1).kind != Kind::dense) {
+        const Segment& prev = la_.seg(i - 1);
+        in_.in = {0.0, prev.turn.direction, prev.junction.t2, prev.turn_box};
+        entry_scaled_ = true, in_scale_ = prev.turn_alpha;
+    }
+    // The exit step (exit_shape()): a stop or a junction, box = b * its scale.
+    if (la_.exit_is_stop(i)) {
+        in_.out = {0.0, -s.u, s.regime.t2, s.u_box};
+        out_scale_ = s.alpha;
+    } else {
+        in_.out = {0.0, s.turn.direction, s.junction.t2, s.turn_box};
+        out_scale_ = s.turn_alpha;
+    }
     // Across a sparse corner the ramps on either side may swing an axis the other way: keep T2
     // between their boxes, half on each side, where the corner's own box does not.
-    const bool corner_in = i == 0 ? frozen_.moving && frozen_.junction : !entry_is_stop(i);
-    if (corner_in && in.in.t2 == t2) in.in_reserve = 0.5 * std::max(0.0, t2 - in.in.box);
-    if (!exit_is_stop(i) && in.out.t2 == t2) in.out_reserve = 0.5 * std::max(0.0, t2 - in.out.box);
-    if (i == 0 && frozen_.moving) in.entry_elapsed = -frozen_centre();
-    return in;
+    corner_in_ = i == 0 ? la_.frozen_.moving && la_.frozen_.junction : !la_.entry_is_stop(i);
+    corner_out_ = !la_.exit_is_stop(i);
+    if (moving) in_.entry_elapsed = -la_.frozen_centre();
 }
 
-bool Lookahead::fits(std::size_t i, double a, double p, double b) const {
-    return profile_legs(rules_, profile_input(i, a, b), a, p, b).fits;
+const ProfileInput& Lookahead::Fitting::input(double a, double b) {
+    if (entry_scaled_) in_.in.box = a * in_scale_;
+    else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
+    in_.out.box = b * out_scale_;
+    const double t2 = la_.rules_.t2;
+    in_.in_reserve = corner_in_ && in_.in.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.in.box) : 0.0;
+    in_.out_reserve = corner_out_ && in_.out.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.out.box) : 0.0;
+    return in_;
 }
+
+ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const { return Fitting(*this, i).input(a, b); }
+
+bool Lookahead::fits(std::size_t i, double a, double p, double b) const { return Fitting(*this, i)(a, p, b); }
 
 // Both segments dense, one speed each (b before, a after): the junction step dV = a u' - b u,
 // its box within each leg (tile), and the corner within its tolerance by estimate: the step's
@@ -393,10 +419,11 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
         if (entry_is_stop(i)) v = std::min(v, room_cap(i, s.alpha));  // its start step fits its leg
         return v;
     }
+    Fitting fits(*this, i);
     return highest(
         [&](double a) {
             const double b = std::min(a, exit_max);
-            return fits(i, a, std::max(a, b), b);
+            return fits(a, std::max(a, b), b);
         },
         0.0, s.feed_max);
 }
@@ -471,6 +498,8 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         s.x0 = v > 0.0 ? length / v : 0.0;
         s.xp = s.x1 = 0.0;
     } else {
+        Fitting fitting(*this, i);
+        auto fits = [&](std::size_t, double a, double p, double b) { return fitting(a, p, b); };
         double a = entry, p = 0.0, b = 0.0;
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
@@ -504,7 +533,7 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         // in the past) keeps the block's accepted speeds and brakes from the next one on.
         if (i == 0 && frozen_.moving && s.brake && s.a == a && !fits(i, a, p, b) && fits(i, a, s.p, s.b))
             p = s.p, b = s.b;
-        const ProfileLegs legs = profile_legs(rules_, profile_input(i, a, b), a, p, b);
+        const ProfileLegs legs = profile_legs(rules_, fitting.input(a, b), a, p, b);
         s.unfit = !legs.fits;  // the check turns it back (its entry corner is lowered)
         s.a = a, s.p = p, s.b = b;
         s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;

@@ -219,6 +219,23 @@ private:
     double dense_exit_max(std::size_t i, double next_entry_max) const;
     ProfileInput profile_input(std::size_t i, double a, double b) const;
     bool fits(std::size_t i, double a, double p, double b) const;
+    // profile_input() and fits() of segment i at many speeds (a search): the parts that do not
+    // depend on the speeds are found once, the rest as profile_input() finds them.
+    class Fitting {
+    public:
+        Fitting(const Lookahead& lookahead, std::size_t i);
+        const ProfileInput& input(double a, double b);
+        bool operator()(double a, double p, double b) { return profile_legs(la_.rules_, input(a, b), a, p, b).fits; }
+
+    private:
+        const Lookahead& la_;
+        std::size_t i_;
+        ProfileInput in_;
+        bool entry_fixed_ = false;   // the frozen step: the same at any speed
+        bool entry_scaled_ = false;  // box = a * in_scale_ (else: entry_shape() at each speed)
+        double in_scale_ = 0.0, out_scale_ = 0.0;  // the exit's box = b * out_scale_
+        bool corner_in_ = false, corner_out_ = false;
+    };
 
     // Motion.
     double frozen_centre() const;           // seconds from the timeline's now
