@@ -348,6 +348,7 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     corner_in_ = i == 0 ? la_.frozen_.moving && la_.frozen_.junction : !la_.entry_is_stop(i);
     corner_out_ = !la_.exit_is_stop(i);
     if (moving) in_.entry_elapsed = -la_.frozen_centre();
+    if (entry_fixed_ || entry_scaled_) in_.gaps = &gaps_;  // a dense entry turns with the speed
 }
 
 const ProfileInput& Lookahead::Fitting::input(double a, double b) {
@@ -360,7 +361,11 @@ const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     return in_;
 }
 
-ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const { return Fitting(*this, i).input(a, b); }
+ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
+    ProfileInput in = Fitting(*this, i).input(a, b);
+    in.gaps = nullptr;  // the Fitting's, gone
+    return in;
+}
 
 bool Lookahead::fits(std::size_t i, double a, double p, double b) const { return Fitting(*this, i)(a, p, b); }
 

@@ -43,25 +43,37 @@ struct StepView {
     double sign = 1.0;
     bool none = false;  // no step (box 0, no direction)
     double unit_box = -1.0;
+    int role = -1;      // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit
 };
 
-StepView view(const StepShape& shape) {
-    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box};
+StepView view(const StepShape& shape, int role = -1) {
+    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role};
 }
 
-bool gap(const SpacingRules& rules, StepView& x, StepView& y) {
-    return gap_between(rules, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
+// GapMemo's entry for two roles (the gap is symmetric: the same products and sums); -1: none.
+int memo_pair(int x, int y) {
+    if (x > y) std::swap(x, y);
+    constexpr int index[4][4] = {{-1, 0, 1, 2}, {-1, 3, 4, 5}, {-1, -1, 6, 7}, {-1, -1, -1, -1}};
+    return x < 0 ? -1 : index[x][y];
+}
+
+bool gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
+    const int k = memo != nullptr ? memo_pair(x.role, y.role) : -1;
+    if (k >= 0 && memo->pair[k] != 0) return memo->pair[k] == 2;
+    const bool needed = gap_between(rules, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
+    if (k >= 0) memo->pair[k] = needed ? 2 : 1;
+    return needed;
 }
 
 // SpacingRules::spacing of two views.
-double spacing(const SpacingRules& rules, StepView& x, StepView& y) {
+double spacing(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
     // Kernels start in the steps' order (each freezes when its kernel starts): a wider y waits
     // for half the difference.
     const double in_order = 0.5 * ((y.box + y.t2) - (x.box + x.t2));
     if (x.none) return std::max(0.5 * y.box, in_order);  // no step
     if (y.none) return std::max(0.5 * x.box, in_order);
     if (x.t2 != y.t2) return 0.5 * (x.box + x.t2 + y.box + y.t2);
-    return 0.5 * (x.box + y.box) + (x.t2 == rules.t2 && gap(rules, x, y) ? rules.t2 : 0.0);
+    return 0.5 * (x.box + y.box) + (x.t2 == rules.t2 && gap(rules, x, y, memo) ? rules.t2 : 0.0);
 }
 
 }  // namespace
@@ -85,19 +97,19 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     std::array<double, 3> speed{};
     std::array<int, 3> leg{};  // which of x0, xp, x1 each gap between steps is
     int n = 0;
-    steps[n] = view(block.in);
+    steps[n] = view(block.in, 0);
     if (p != a) {
         speed[n] = a, leg[n] = 0;
-        steps[++n] = {std::abs(p - a) * block.alpha, rules.t2, &block.u, p > a ? 1.0 : -1.0, false, block.u_unit_box};
+        steps[++n] = {std::abs(p - a) * block.alpha, rules.t2, &block.u, p > a ? 1.0 : -1.0, false, block.u_unit_box, p > a ? 1 : 2};
     }
     if (b != p) {
         speed[n] = p, leg[n] = n == 0 ? 0 : 1;
-        steps[++n] = {std::abs(b - p) * block.alpha, rules.t2, &block.u, b > p ? 1.0 : -1.0, false, block.u_unit_box};
+        steps[++n] = {std::abs(b - p) * block.alpha, rules.t2, &block.u, b > p ? 1.0 : -1.0, false, block.u_unit_box, b > p ? 1 : 2};
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
-    steps[++n] = view(block.out);
+    steps[++n] = view(block.out, 3);
     std::array<double, 3> x{};
-    for (int i = 0; i < n; ++i) x[i] = spacing(rules, steps[i], steps[i + 1]);
+    for (int i = 0; i < n; ++i) x[i] = spacing(rules, steps[i], steps[i + 1], block.gaps);
     // The reserves keep T2 between a neighbour's ramp and this block's boxes across each junction;
     // a jerk gap between the junction step and the next box here does that already. For one leg
     // both junctions' reserves fall into it (with a gap between its two steps, either suffices).
@@ -115,7 +127,7 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     // Steps further apart than neighbours: boxes of opposite sign on an axis keep T2 between them.
     for (int i = 0; i + 2 <= n; ++i)
         for (int k = i + 2; k <= n; ++k) {
-            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || !gap(rules, steps[i], steps[k]))
+            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || !gap(rules, steps[i], steps[k], block.gaps))
                 continue;
             double apart = 0.0;
             for (int m = i; m < k; ++m) apart += x[m];

@@ -224,6 +224,8 @@ private:
     class Fitting {
     public:
         Fitting(const Lookahead& lookahead, std::size_t i);
+        Fitting(const Fitting&) = delete;  // in_ points at its own gaps_
+        Fitting& operator=(const Fitting&) = delete;
         const ProfileInput& input(double a, double b);
         bool operator()(double a, double p, double b) { return profile_legs(la_.rules_, input(a, b), a, p, b).fits; }
 
@@ -235,6 +237,7 @@ private:
         bool entry_scaled_ = false;  // box = a * in_scale_ (else: entry_shape() at each speed)
         double in_scale_ = 0.0, out_scale_ = 0.0;  // the exit's box = b * out_scale_
         bool corner_in_ = false, corner_out_ = false;
+        GapMemo gaps_;  // the directions stay the same unless the entry is a dense junction
     };
 
     // Motion.

@@ -16,6 +16,9 @@
 #include <firtp/parameters.hpp>
 #include <firtp/types.hpp>
 
+#include <array>
+#include <cstdint>
+
 namespace firtp {
 
 // One end of a step as the spacing rules see it: the box width T1, the direction of dV and the
@@ -44,6 +47,12 @@ struct SpacingRules {
     double unit_box(const AxisVector& d) const;
 };
 
+// Whether the steps of one block's profile need jerk gaps, kept across the calls of a search whose
+// step directions do not change (the entry's, +-u, the exit's): 0 not known yet, 1 no, 2 yes.
+struct GapMemo {
+    std::array<std::uint8_t, 8> pair{};
+};
+
 // A long block between its end steps, at given entry, cruise and exit speeds.
 struct ProfileInput {
     double length = 0.0;
@@ -59,6 +68,8 @@ struct ProfileInput {
     // The entry step is already under way: its centre was this long ago (command time), and the
     // next step's kernel must not start before now. -inf: no such constraint.
     double entry_elapsed = -1e300;
+    // Where a search keeps the jerk gaps of these directions (nullptr: found at each call).
+    GapMemo* gaps = nullptr;
 };
 
 struct ProfileLegs {
