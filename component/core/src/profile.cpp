@@ -35,15 +35,16 @@ bool gap_between(const SpacingRules& rules, const AxisVector& x, double sx, doub
     return false;
 }
 
-// A step as profile_legs sees it: its shape's numbers, its direction sign * *direction.
+// A step as profile_legs sees it: its shape's numbers, its direction sign * *direction. (No
+// default values: profile_legs fills the ones it uses, every call.)
 struct StepView {
-    double box = 0.0;
-    double t2 = 0.0;
-    const AxisVector* direction = nullptr;
-    double sign = 1.0;
-    bool none = false;  // no step (box 0, no direction)
-    double unit_box = -1.0;
-    int role = -1;      // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit
+    double box;
+    double t2;
+    const AxisVector* direction;
+    double sign;
+    bool none;      // no step (box 0, no direction)
+    double unit_box;
+    int role;       // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit (-1: none)
 };
 
 StepView view(const StepShape& shape, int role = -1) {
@@ -57,12 +58,17 @@ int memo_pair(int x, int y) {
     return x < 0 ? -1 : index[x][y];
 }
 
-bool gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
-    const int k = memo != nullptr ? memo_pair(x.role, y.role) : -1;
-    if (k >= 0 && memo->pair[k] != 0) return memo->pair[k] == 2;
+bool find_gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo, int k) {
     const bool needed = gap_between(rules, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
     if (k >= 0) memo->pair[k] = needed ? 2 : 1;
     return needed;
+}
+
+// (Small enough to inline where profile_legs asks it: most answers come from the memo.)
+inline bool gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
+    const int k = memo != nullptr ? memo_pair(x.role, y.role) : -1;
+    if (k >= 0 && memo->pair[k] != 0) return memo->pair[k] == 2;
+    return find_gap(rules, x, y, memo, k);
 }
 
 // SpacingRules::spacing of two views.
