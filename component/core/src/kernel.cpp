@@ -6,23 +6,11 @@
 
 namespace firtp {
 
-Kernel two_stage(double t1, double t2) {
-    Kernel k;
-    k.a = std::max(t1, t2);
-    k.b = std::min(t1, t2);
-    return k;
-}
-
 double Kernel::position(double t) const {
     if (chain != nullptr) return chain->position(t);
     if (t <= 0.0) return 0.0;
     if (a <= 0.0) return t;  // sharp
     return kernel_detail::two_stage_step(a, b, t).position;
-}
-
-double Kernel::lead() const {
-    if (chain != nullptr) return chain->position(0.5 * chain->delay());
-    return a > 0.0 ? (3.0 * a * a + b * b) / (24.0 * a) : 0.0;
 }
 
 double Kernel::lead_at(double offset) const {

@@ -169,15 +169,6 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
 }
 
-double Lookahead::entry_width(std::size_t i, double a) const {
-    const Segment& s = seg(i);
-    if (i == 0 && frozen_.moving) return frozen_.step.kernel.width();
-    if (entry_is_stop(i)) return a * s.alpha + s.regime.t2;
-    const Segment& prev = seg(i - 1);
-    if (prev.kind == Kind::dense) return box(a * s.u - prev.b * prev.u, prev.junction) + prev.junction.t2;
-    return a * prev.turn_alpha + prev.junction.t2;
-}
-
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
     if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop step
@@ -379,6 +370,17 @@ Lookahead::DenseJunction Lookahead::dense_junction(std::size_t i) const {
     j.s = &seg(i);
     j.n = &seg(i + 1);
     j.length = seg_length(i);
+    if (i == 0 && frozen_.moving) {
+        j.width_fixed = true;
+        j.width_add = frozen_.step.kernel.width();
+    } else if (entry_is_stop(i)) {
+        j.width_scale = j.s->alpha, j.width_add = j.s->regime.t2;
+    } else {
+        const Segment& prev = seg(i - 1);
+        if (prev.kind == Kind::dense) j.dense_before = &prev;
+        else j.width_scale = prev.turn_alpha;
+        j.width_add = prev.junction.t2;
+    }
     j.bounded = !(j.s->turn.beta < straight_angle || !std::isfinite(j.s->tolerance));
     if (j.bounded) {
         j.m = unit(j.s->u + j.n->u);
@@ -398,7 +400,11 @@ bool Lookahead::dense_ok(const DenseJunction& j, double b, double a) const {
     const double leg_s = b > 0.0 ? j.length / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
     if (t1 > leg_s || t1 > leg_n) return false;
     // Kernels start in the steps' order: a step wider than the one entering the block waits.
-    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width(i, b))) return false;
+    const double entry_width = j.width_fixed ? j.width_add
+                               : j.dense_before != nullptr
+                                   ? box(b * s.u - j.dense_before->b * j.dense_before->u, j.dense_before->junction) + j.width_add
+                                   : b * j.width_scale + j.width_add;
+    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width)) return false;
     // ... and not before now (a hold brakes in the block under way).
     if (i == 0 && frozen_.moving && frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return false;
     if (!j.bounded) return true;

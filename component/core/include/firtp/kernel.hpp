@@ -18,6 +18,8 @@
 #include <firtp/parameters.hpp>
 #include <firtp/types.hpp>
 
+#include <algorithm>
+
 namespace firtp {
 
 struct Kernel {
@@ -92,15 +94,25 @@ inline StepSample Kernel::step(double t) const {
     return kernel_detail::two_stage_step(a, b, t);
 }
 
+inline double Kernel::lead() const {
+    if (chain != nullptr) return chain->position(0.5 * chain->delay());
+    return a > 0.0 ? (3.0 * a * a + b * b) / (24.0 * a) : 0.0;
+}
+
+// Two moving averages of lengths t1 and t2 (any order, >= 0).
+inline Kernel two_stage(double t1, double t2) {
+    Kernel k;
+    k.a = std::max(t1, t2);
+    k.b = std::min(t1, t2);
+    return k;
+}
+
 inline double Kernel::step_position(double t) const {
     if (chain != nullptr) return chain->step(t).position;
     if (a <= 0.0) return t >= 0.0 ? t : 0.0;
     if (t <= kernel_detail::started_after) return 0.0;
     return kernel_detail::two_stage_position(a, b, t);
 }
-
-// Two moving averages of lengths t1 and t2 (any order, >= 0).
-Kernel two_stage(double t1, double t2);
 
 // T1 of a step dV: max over the axes of |dV_a| / A_a (0 for axes without an acceleration limit).
 double acceleration_time(const MachineLimits& limits, const AxisVector& dv);

@@ -186,7 +186,6 @@ private:
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
     StepShape exit_shape(std::size_t i, double b) const;
-    double entry_width(std::size_t i, double a) const;  // kernel width of the step entering segment i at a
 
     // Geometry and caps.
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
@@ -213,6 +212,11 @@ private:
         bool bounded = false;     // a turn with a tolerance: the estimate is checked
         AxisVector m = AxisVector::Zero();  // the turn's bisector, unit(u + u')
         double epsilon = 0.0;     // the tolerance the estimate is held to
+        // The width of the step entering segment i at b, its case found once: the frozen step's
+        // (fixed), b * scale + t2, or (dense before) a junction step's box found at each speed + t2.
+        bool width_fixed = false;
+        const Segment* dense_before = nullptr;
+        double width_scale = 0.0, width_add = 0.0;
     };
     DenseJunction dense_junction(std::size_t i) const;
     bool dense_ok(const DenseJunction& j, double b, double a) const;  // the dense junction after j.i
