@@ -164,25 +164,16 @@ Lookahead::Step Lookahead::entry_step(std::size_t i) const {
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     const Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
-    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2};  // the start step
+    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start step
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
-    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2};  // the corner, one speed both sides
-}
-
-double Lookahead::entry_width(std::size_t i, double a) const {
-    const Segment& s = seg(i);
-    if (i == 0 && frozen_.moving) return frozen_.step.kernel.width();
-    if (entry_is_stop(i)) return a * s.alpha + s.regime.t2;
-    const Segment& prev = seg(i - 1);
-    if (prev.kind == Kind::dense) return box(a * s.u - prev.b * prev.u, prev.junction) + prev.junction.t2;
-    return a * prev.turn_alpha + prev.junction.t2;
+    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
 }
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2};  // the stop step
-    return {b * s.turn_alpha, s.turn.direction, s.junction.t2};
+    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop step
+    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box};
 }
 
 // ---- Geometry and caps -------------------------------------------------------------------------
@@ -295,6 +286,7 @@ void Lookahead::junction_caps(std::size_t i) {
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     s.turn = make_turn(s.u, seg(i + 1).u, limits_);
+    s.turn_box = rules_.unit_box(s.turn.direction);
     s.learned_cap = infinity;
     s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal || seg(i + 1).dwell > 0.0
                  ? Kind::stop
@@ -315,59 +307,121 @@ void Lookahead::link(std::size_t i) {
 
 // ---- The profile of one segment ----------------------------------------------------------------
 
-ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
-    const Segment& s = seg(i);
-    ProfileInput in;
-    in.length = seg_length(i);
-    in.alpha = s.alpha;
-    in.u = s.u;
-    in.in = entry_shape(i, a);
-    in.out = exit_shape(i, b);
-    const double t2 = rules_.t2;
+Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(lookahead), i_(i) {
+    const Segment& s = la_.seg(i);
+    in_.length = la_.seg_length(i);
+    in_.alpha = s.alpha;
+    in_.u = s.u;
+    in_.u_unit_box = s.u_box;
+    const bool moving = i == 0 && la_.frozen_.moving;
+    // The entry step (entry_shape()): the frozen one, a start, a corner at one speed, or a dense
+    // junction (speed and turn at once: found at each speed).
+    if (moving) {
+        in_.in = la_.frozen_.step.shape();
+        entry_fixed_ = true;
+    } else if (la_.entry_is_stop(i)) {
+        in_.in = {0.0, s.u, s.regime.t2, s.u_box};
+        entry_scaled_ = true, in_scale_ = s.alpha;
+    } else if (la_.seg(i - 1).kind != Kind::dense) {
+        const Segment& prev = la_.seg(i - 1);
+        in_.in = {0.0, prev.turn.direction, prev.junction.t2, prev.turn_box};
+        entry_scaled_ = true, in_scale_ = prev.turn_alpha;
+    }
+    // The exit step (exit_shape()): a stop or a junction, box = b * its scale.
+    if (la_.exit_is_stop(i)) {
+        in_.out = {0.0, -s.u, s.regime.t2, s.u_box};
+        out_scale_ = s.alpha;
+    } else {
+        in_.out = {0.0, s.turn.direction, s.junction.t2, s.turn_box};
+        out_scale_ = s.turn_alpha;
+    }
     // Across a sparse corner the ramps on either side may swing an axis the other way: keep T2
     // between their boxes, half on each side, where the corner's own box does not.
-    const bool corner_in = i == 0 ? frozen_.moving && frozen_.junction : !entry_is_stop(i);
-    if (corner_in && in.in.t2 == t2) in.in_reserve = 0.5 * std::max(0.0, t2 - in.in.box);
-    if (!exit_is_stop(i) && in.out.t2 == t2) in.out_reserve = 0.5 * std::max(0.0, t2 - in.out.box);
-    if (i == 0 && frozen_.moving) in.entry_elapsed = -frozen_centre();
+    corner_in_ = i == 0 ? la_.frozen_.moving && la_.frozen_.junction : !la_.entry_is_stop(i);
+    corner_out_ = !la_.exit_is_stop(i);
+    if (moving) in_.entry_elapsed = -la_.frozen_centre();
+    if (entry_fixed_ || entry_scaled_) in_.gaps = &gaps_;  // a dense entry turns with the speed
+}
+
+const ProfileInput& Lookahead::Fitting::input(double a, double b) {
+    if (entry_scaled_) in_.in.box = a * in_scale_;
+    else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
+    in_.out.box = b * out_scale_;
+    const double t2 = la_.rules_.t2;
+    in_.in_reserve = corner_in_ && in_.in.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.in.box) : 0.0;
+    in_.out_reserve = corner_out_ && in_.out.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.out.box) : 0.0;
+    return in_;
+}
+
+ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
+    ProfileInput in = Fitting(*this, i).input(a, b);
+    in.gaps = nullptr;  // the Fitting's, gone
     return in;
 }
 
-bool Lookahead::fits(std::size_t i, double a, double p, double b) const {
-    return profile_legs(rules_, profile_input(i, a, b), a, p, b).fits;
-}
+bool Lookahead::fits(std::size_t i, double a, double p, double b) const { return Fitting(*this, i)(a, p, b); }
 
 // Both segments dense, one speed each (b before, a after): the junction step dV = a u' - b u,
 // its box within each leg (tile), and the corner within its tolerance by estimate: the step's
 // pull towards the inside of the turn, and the run's jerk stage smoothing the curve the steps
 // trace (a T2 moving average of a parabola: a T2^2 / 24). The check measures it exactly.
-bool Lookahead::dense_ok(std::size_t i, double b, double a) const {
-    const Segment& s = seg(i);
-    const Segment& n = seg(i + 1);
+Lookahead::DenseJunction Lookahead::dense_junction(std::size_t i) const {
+    DenseJunction j;
+    j.i = i;
+    j.s = &seg(i);
+    j.n = &seg(i + 1);
+    j.length = seg_length(i);
+    if (i == 0 && frozen_.moving) {
+        j.width_fixed = true;
+        j.width_add = frozen_.step.kernel.width();
+    } else if (entry_is_stop(i)) {
+        j.width_scale = j.s->alpha, j.width_add = j.s->regime.t2;
+    } else {
+        const Segment& prev = seg(i - 1);
+        if (prev.kind == Kind::dense) j.dense_before = &prev;
+        else j.width_scale = prev.turn_alpha;
+        j.width_add = prev.junction.t2;
+    }
+    j.bounded = !(j.s->turn.beta < straight_angle || !std::isfinite(j.s->tolerance));
+    if (j.bounded) {
+        j.m = unit(j.s->u + j.n->u);
+        j.epsilon = j.s->tolerance;
+        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) j.epsilon /= std::cos(0.5 * j.s->turn.beta);
+    }
+    return j;
+}
+
+bool Lookahead::dense_ok(const DenseJunction& j, double b, double a) const {
+    const std::size_t i = j.i;
+    const Segment& s = *j.s;
+    const Segment& n = *j.n;
     if (std::max(a, b) > s.learned_cap) return false;
     const AxisVector dv = a * n.u - b * s.u;
     const double t1 = box(dv, s.junction);
-    const double leg_s = b > 0.0 ? seg_length(i) / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
+    const double leg_s = b > 0.0 ? j.length / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
     if (t1 > leg_s || t1 > leg_n) return false;
     // Kernels start in the steps' order: a step wider than the one entering the block waits.
-    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width(i, b))) return false;
+    const double entry_width = j.width_fixed ? j.width_add
+                               : j.dense_before != nullptr
+                                   ? box(b * s.u - j.dense_before->b * j.dense_before->u, j.dense_before->junction) + j.width_add
+                                   : b * j.width_scale + j.width_add;
+    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width)) return false;
     // ... and not before now (a hold brakes in the block under way).
     if (i == 0 && frozen_.moving && frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return false;
-    if (s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) return true;
-    const AxisVector m = unit(s.u + n.u);
+    if (!j.bounded) return true;
+    const AxisVector& m = j.m;
     const double inward = (dv - m * dv.dot(m)).norm();
     const double t2 = s.junction.t2;
     double estimate = inward * two_stage(t1, t2).lead();
     const double legs = 0.5 * (std::isfinite(leg_s) ? leg_s : 0.0) + 0.5 * (std::isfinite(leg_n) ? leg_n : 0.0);
     if (legs > 0.0) estimate += inward / legs * t2 * t2 / 24.0;
     estimate += chord_margin(t1 > 0.0 ? dv.norm() / std::max(t1, t2) : 0.0, jerk_norm_, parameters_.period);
-    double epsilon = s.tolerance;
-    if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
-    return estimate <= epsilon;
+    return estimate <= j.epsilon;
 }
 
 double Lookahead::dense_exit_max(std::size_t i, double next_entry_max) const {
-    return highest([&](double b) { return dense_ok(i, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
+    const DenseJunction j = dense_junction(i);
+    return highest([&](double b) { return dense_ok(j, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
 }
 
 double Lookahead::max_entry(std::size_t i, double exit_max) const {
@@ -377,10 +431,11 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
         if (entry_is_stop(i)) v = std::min(v, room_cap(i, s.alpha));  // its start step fits its leg
         return v;
     }
+    Fitting fits(*this, i);
     return highest(
         [&](double a) {
             const double b = std::min(a, exit_max);
-            return fits(i, a, std::max(a, b), b);
+            return fits(a, std::max(a, b), b);
         },
         0.0, s.feed_max);
 }
@@ -430,7 +485,8 @@ double Lookahead::entry_for(std::size_t i) const {
     // it must.
     const Segment& s = seg(i);
     const double b = prev.b;
-    auto ok = [&](double a) { return dense_ok(i - 1, b, a); };
+    const DenseJunction j = dense_junction(i - 1);
+    auto ok = [&](double a) { return dense_ok(j, b, a); };
     const double hi = std::min(s.brake ? 0.0 : target(i), s.entry_max), lo = std::min(b, s.entry_max);
     if (hi >= lo) return ok(lo) ? highest(ok, lo, hi) : lo;
     const double v = lowest(ok, hi, lo);
@@ -454,6 +510,8 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         s.x0 = v > 0.0 ? length / v : 0.0;
         s.xp = s.x1 = 0.0;
     } else {
+        Fitting fitting(*this, i);
+        auto fits = [&](std::size_t, double a, double p, double b) { return fitting(a, p, b); };
         double a = entry, p = 0.0, b = 0.0;
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
@@ -487,7 +545,7 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         // in the past) keeps the block's accepted speeds and brakes from the next one on.
         if (i == 0 && frozen_.moving && s.brake && s.a == a && !fits(i, a, p, b) && fits(i, a, s.p, s.b))
             p = s.p, b = s.b;
-        const ProfileLegs legs = profile_legs(rules_, profile_input(i, a, b), a, p, b);
+        const ProfileLegs legs = profile_legs(rules_, fitting.input(a, b), a, p, b);
         s.unfit = !legs.fits;  // the check turns it back (its entry corner is lowered)
         s.a = a, s.p = p, s.b = b;
         s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;
@@ -535,6 +593,7 @@ Result Lookahead::add(const Block& block) {
     s.start = goal_;
     s.end = block.target;
     s.u = delta / length;
+    s.u_box = rules_.unit_box(s.u);
     s.length = length;
     const double cap = velocity_cap(limits_, s.u);
     s.feed = std::min(block.feed, cap);
@@ -630,6 +689,7 @@ void Lookahead::place_hold_stop() {
             s.exact_stop = false;
             s.brake = true;
             s.turn = make_turn(s.u, s.u, limits_);
+            s.turn_box = rules_.unit_box(s.turn.direction);
             s.learned_cap = infinity;
             insert_after(i, rest);
             junction_caps(i);

@@ -33,82 +33,109 @@ void stages(const Kernel& k, double& a, double& b) {
     }
 }
 
-// The knots of one step: those after `from` and up to `to` are appended at knots[n...] (returns
-// the new n); those before it are summed into the state at `from` (v, a, j). Both from the same
-// knot times, so a knot that rounds onto `from` is counted exactly once.
-std::size_t add_knots(std::vector<Knot>& knots, std::size_t n, const AxisVector& dv, double start, const Kernel& k,
-                      double from, double to, AxisVector& v, AxisVector& a, AxisVector& j) {
+// The knots of one step: its jumps go to edges[e]; the knots after `from` and up to `to` are
+// appended at knots[n...] (returns the new n); those before it are summed into the state at `from`
+// (v, a, j). Both from the same knot times, so a knot that rounds onto `from` is counted exactly
+// once. Only the first `axes` entries of the vectors are computed.
+std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>& knots, std::size_t n, const AxisVector& step,
+                      double start, const Kernel& k, double from, double to, int axes, AxisVector& v, AxisVector& a,
+                      AxisVector& j) {
     double ta = 0.0, tb = 0.0;
     stages(k, ta, tb);
+    const bool one_stage = tb <= negligible_stage * ta;  // (a stage of 1e-17 s: jerks of 1e21 to cancel)
+    const double divisor = ta <= 0.0 ? 0.0 : one_stage ? ta : ta * tb;
+    edge.order = ta <= 0.0 ? 1 : one_stage ? 2 : 3;
+    for (int i = 0; i < axes; ++i) edge.jump[i] = divisor != 0.0 ? step[i] / divisor : step[i];
+    const AxisVector& jump = edge.jump;
     // At `from` the state holds every knot before it and those at it but the kernel's start (the
     // response is 0 there, its right-hand derivatives are not).
-    // A jump of `value` in the derivative of order `order` (1 velocity, 2 acceleration, 3 jerk).
-    auto add = [&](double t, const AxisVector& value, int order) {
+    auto add = [&](double t, bool flip) {
         if (t > from || (t == from && t == start)) {
-            if (t <= to && n < knots.size()) knots[n++] = {t, value, order};
+            if (t <= to && n < knots.size()) knots[n++] = {t, e, flip ? 1u : 0u};
             return;
         }
         const double dt = from - t;
-        if (order == 3) j += value, a += value * dt, v += value * (0.5 * dt * dt);
-        else if (order == 2) a += value, v += value * dt;
-        else v += value;
+        if (edge.order == 3) {
+            const double half = 0.5 * dt * dt;
+            for (int i = 0; i < axes; ++i) {
+                const double value = flip ? -jump[i] : jump[i];
+                j[i] += value, a[i] += value * dt, v[i] += value * half;
+            }
+        } else if (edge.order == 2) {
+            for (int i = 0; i < axes; ++i) {
+                const double value = flip ? -jump[i] : jump[i];
+                a[i] += value, v[i] += value * dt;
+            }
+        } else {
+            for (int i = 0; i < axes; ++i) v[i] += jump[i];
+        }
     };
     if (ta <= 0.0) {
-        add(start, dv, 1);
-    } else if (tb <= negligible_stage * ta) {  // (a stage of 1e-17 s would give jerks of 1e21 to cancel)
-        add(start, dv / ta, 2);
-        add(start + ta, -dv / ta, 2);
+        add(start, false);
+    } else if (one_stage) {
+        add(start, false);
+        add(start + ta, true);
     } else {
-        const AxisVector jk = dv / (ta * tb);
-        add(start, jk, 3);
-        add(start + tb, -jk, 3);
-        add(start + ta, -jk, 3);
-        add(start + ta + tb, jk, 3);
+        add(start, false);
+        add(start + tb, true);
+        add(start + ta, true);
+        add(start + ta + tb, false);
     }
     return n;
 }
 
 struct Checker {
-    const MachineLimits& limits;
+    int axes;
+    // Per axis and derivative (velocity, acceleration, jerk): limit * slack, +inf where there is no
+    // limit (0).
+    double threshold[3][max_axes];
     LimitCheck result;
 
-    bool over(double value, double limit, double t, int axis, int derivative) {
-        if (limit > 0.0 && std::abs(value) > limit * slack && result.ok) {
-            result = {false, t, axis, derivative, value};
-            return true;
+    explicit Checker(const MachineLimits& limits) : axes(limits.axes) {
+        for (int i = 0; i < axes; ++i) {
+            const double l[3] = {limits.axis[i].max_velocity, limits.axis[i].max_acceleration, limits.axis[i].max_jerk};
+            for (int d = 0; d < 3; ++d) threshold[d][i] = l[d] > 0.0 ? l[d] * slack : HUGE_VAL;
         }
-        return false;
+    }
+    void over(double value, double t, int axis, int derivative) {
+        if (std::abs(value) > threshold[derivative - 1][axis] && result.ok) result = {false, t, axis, derivative, value};
     }
     void state(double t, const AxisVector& v, const AxisVector& a) {
-        for (int i = 0; i < limits.axes; ++i) {
-            over(v[i], limits.axis[i].max_velocity, t, i, 1);
-            over(a[i], limits.axis[i].max_acceleration, t, i, 2);
+        for (int i = 0; i < axes; ++i) {
+            over(v[i], t, i, 1);
+            over(a[i], t, i, 2);
         }
     }
 };
 
 }  // namespace
 
-LimitSweep::LimitSweep(std::size_t max_legs) : knots_(max_legs * 8) {}
+// An edge's slot is kept only when one of its knots is (at most one a knot), so the edges never
+// run out before the knots do.
+LimitSweep::LimitSweep(std::size_t max_legs) : edges_(max_legs * 8 + 1), knots_(max_legs * 8) {}
 
 LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits,
                              double period) {
     std::vector<Knot>& knots = knots_;
+    const int axes = limits.axes;  // the only entries computed and checked
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
+    std::uint32_t e = 0;
     for (const TimedLeg& leg : legs) {
         if (!(leg.tv > 0.0)) continue;  // no time, no motion
-        const AxisVector dv = leg.delta / leg.tv;
-        const double starts[2] = {leg.rise, leg.rise + leg.fall};
-        const Kernel* kernels[2] = {&leg.rising, &leg.falling};
-        for (int e = 0; e < 2; ++e) {
-            const AxisVector step = e == 0 ? dv : AxisVector(-dv);
-            n = add_knots(knots, n, step, starts[e], *kernels[e], from, to, v, a, j);
-        }
+        AxisVector up, down;  // the rising edge steps by dv, the falling one by -dv
+        for (int i = 0; i < axes; ++i) up[i] = leg.delta[i] / leg.tv, down[i] = -up[i];
+        std::size_t before = n;
+        n = add_knots(edges_[e], e, knots, n, up, leg.rise, leg.rising, from, to, axes, v, a, j);
+        if (n > before) ++e;
+        before = n;
+        n = add_knots(edges_[e], e, knots, n, down, leg.rise + leg.fall, leg.falling, from, to, axes, v, a, j);
+        if (n > before) ++e;
     }
-    std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n),
-              [](const Knot& x, const Knot& y) { return x.t < y.t; });
-    Checker c{limits, {}};
+    // The same comparisons of t as sorting the knots with their jumps would make: the same order,
+    // ties included.
+    std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n), [](const Knot& x, const Knot& y) { return x.t < y.t; });
+    Checker c(limits);
     c.state(from, v, a);
     double t = from;
     for (std::size_t k = 0; k <= n; ++k) {
@@ -118,33 +145,44 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
             // Knots that coincide are computed from sums that round differently: an interval of a
             // nanosecond between them has no jerk that moves anything.
             const bool real = dt > 1e-9;
-            for (int i = 0; i < limits.axes; ++i) {
-                if (real) c.over(j[i], limits.axis[i].max_jerk, t, i, 3);
-                // A velocity extremum inside the interval, where the acceleration crosses zero.
-                if (j[i] != 0.0) {
+            for (int i = 0; i < axes; ++i) {
+                if (real) c.over(j[i], t, i, 3);
+                // A velocity extremum inside the interval, where the acceleration crosses zero
+                // (-a / j > 0: a and j of opposite signs).
+                if ((j[i] > 0.0 && a[i] < 0.0) || (j[i] < 0.0 && a[i] > 0.0)) {
                     const double tz = -a[i] / j[i];
-                    if (tz > 0.0 && tz < dt) c.over(v[i] + a[i] * tz + 0.5 * j[i] * tz * tz, limits.axis[i].max_velocity, t + tz, i, 1);
+                    if (tz > 0.0 && tz < dt) c.over(v[i] + a[i] * tz + 0.5 * j[i] * tz * tz, t + tz, i, 1);
                 }
             }
-            v += a * dt + j * (0.5 * dt * dt);
-            a += j * dt;
+            const double half = 0.5 * dt * dt;
+            for (int i = 0; i < axes; ++i) {
+                v[i] += a[i] * dt + j[i] * half;
+                a[i] += j[i] * dt;
+            }
             t = next;
             c.state(t, v, a);
         }
         if (k == n) break;
         // Every knot at this time at once: the jumps of two legs meeting at a junction cancel.
         AxisVector jump = AxisVector::Zero();
-        bool jumps = false;
+        bool jumps = false, moved = false;
         for (; k < n && knots[k].t <= t + same_knot; ++k) {
-            const Knot& knot = knots[k];
-            if (knot.order == 2) jump += knot.value, jumps = true;
-            (knot.order == 3 ? j : knot.order == 2 ? a : v) += knot.value;
+            const Edge& edge = edges_[knots[k].edge];
+            const bool flip = knots[k].flip != 0;
+            AxisVector& target = edge.order == 3 ? j : edge.order == 2 ? a : v;
+            for (int i = 0; i < axes; ++i) {
+                const double value = flip ? -edge.jump[i] : edge.jump[i];
+                target[i] += value;
+                if (edge.order == 2) jump[i] += value;
+            }
+            jumps = jumps || edge.order == 2;
+            moved = moved || edge.order != 3;  // a jump in jerk leaves v and a as they were checked
         }
         --k;
         if (jumps)
-            for (int i = 0; i < limits.axes; ++i)  // a jump in acceleration, as the samples' differences see it
-                if (jump[i] != 0.0) c.over(jump[i] / period, limits.axis[i].max_jerk, t, i, 3);
-        c.state(t, v, a);
+            for (int i = 0; i < axes; ++i)  // a jump in acceleration, as the samples' differences see it
+                if (jump[i] != 0.0) c.over(jump[i] / period, t, i, 3);
+        if (moved) c.state(t, v, a);
         if (!c.result.ok) break;
     }
     return c.result;
@@ -167,6 +205,52 @@ void index_legs(std::span<TimedLeg> legs) {
 }
 
 namespace {
+
+// The kernel's step response at x is exactly 0, with its derivatives (Kernel::step).
+bool not_begun(const Kernel& k, double x) { return k.chain == nullptr && k.a > 0.0 && x <= kernel_detail::started_after; }
+
+// sum_legs' sum over the legs [lo, hi) that may move at t, into s; Axes > 0: a fixed count (= axes),
+// summed in locals (the same additions in the same order).
+template <bool Derivatives, int Axes>
+void add_moving(std::span<const TimedLeg> legs, std::size_t corner, double t, std::size_t lo, std::size_t hi, int axes,
+                AxisState& s) {
+    const int n = Axes > 0 ? Axes : axes;
+    double p_sum[max_axes], v_sum[max_axes], a_sum[max_axes], j_sum[max_axes];
+    for (int i = 0; i < n; ++i) {
+        p_sum[i] = s.position[i];
+        if constexpr (Derivatives) v_sum[i] = s.velocity[i], a_sum[i] = s.acceleration[i], j_sum[i] = s.jerk[i];
+    }
+    for (std::size_t k = lo; k < hi; ++k) {
+        const TimedLeg& leg = legs[k];
+        if (!(leg.tv > 0.0)) continue;
+        // A leg after the corner that has not begun adds exactly 0 (at most a zero's sign, which
+        // no distance sees).
+        if (k > corner && not_begun(leg.rising, t - leg.rise) && not_begun(leg.falling, t - leg.rise - leg.fall)) continue;
+        const double sign = k <= corner ? 1.0 : 0.0;
+        if constexpr (Derivatives) {
+            const StepSample up = leg.rising.step(t - leg.rise);
+            const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
+            const double p = (up.position - down.position) / leg.tv - sign;
+            const double v = (up.velocity - down.velocity) / leg.tv;
+            const double a = (up.acceleration - down.acceleration) / leg.tv;
+            const double j = (up.jerk - down.jerk) / leg.tv;
+            for (int i = 0; i < n; ++i) {
+                const double d = leg.delta[i];
+                p_sum[i] += d * p;
+                v_sum[i] += d * v;
+                a_sum[i] += d * a;
+                j_sum[i] += d * j;
+            }
+        } else {
+            const double p = (leg.rising.step_position(t - leg.rise) - leg.falling.step_position(t - leg.rise - leg.fall)) / leg.tv - sign;
+            for (int i = 0; i < n; ++i) p_sum[i] += leg.delta[i] * p;
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        s.position[i] = p_sum[i];
+        if constexpr (Derivatives) s.velocity[i] = v_sum[i], s.acceleration[i] = a_sum[i], s.jerk[i] = j_sum[i];
+    }
+}
 
 // relative_state's sum; with Derivatives false only the position (the same arithmetic).
 template <bool Derivatives>
@@ -191,30 +275,9 @@ void sum_legs(std::span<const TimedLeg> legs, std::size_t corner, double t, Axis
         if (lo > corner + 1) s.position += done - corner_end;     // legs after the corner that ended
         if (hi <= corner) s.position -= corner_end - waiting;     // legs up to the corner not begun
     }
-    const int axes = legs.front().axes;  // the other axes' sums stay 0
-    for (std::size_t k = lo; k < hi; ++k) {
-        const TimedLeg& leg = legs[k];
-        if (!(leg.tv > 0.0)) continue;
-        const double sign = k <= corner ? 1.0 : 0.0;
-        if constexpr (Derivatives) {
-            const StepSample up = leg.rising.step(t - leg.rise);
-            const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
-            const double p = (up.position - down.position) / leg.tv - sign;
-            const double v = (up.velocity - down.velocity) / leg.tv;
-            const double a = (up.acceleration - down.acceleration) / leg.tv;
-            const double j = (up.jerk - down.jerk) / leg.tv;
-            for (int i = 0; i < axes; ++i) {
-                const double d = leg.delta[i];
-                s.position[i] += d * p;
-                s.velocity[i] += d * v;
-                s.acceleration[i] += d * a;
-                s.jerk[i] += d * j;
-            }
-        } else {
-            const double p = (leg.rising.step_position(t - leg.rise) - leg.falling.step_position(t - leg.rise - leg.fall)) / leg.tv - sign;
-            for (int i = 0; i < axes; ++i) s.position[i] += leg.delta[i] * p;
-        }
-    }
+    // The other axes' sums stay 0. Three axes (the common machine) with a loop the compiler unrolls.
+    if (legs.front().axes == 3) add_moving<Derivatives, 3>(legs, corner, t, lo, hi, 3, s);
+    else add_moving<Derivatives, 0>(legs, corner, t, lo, hi, legs.front().axes, s);
 }
 
 }  // namespace

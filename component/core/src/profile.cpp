@@ -8,57 +8,114 @@ namespace firtp {
 
 namespace {
 
-// The box height a step in direction d reaches on axis i when its T1 puts the most loaded axis
-// at its limit: |d_i| / max_k (|d_k| / A_k).
-double height(const MachineLimits& limits, const AxisVector& d, int i) {
+// The T1 per unit of a step in direction d: max_k |d_k| / A_k. A step in direction d whose T1 puts
+// the most loaded axis at its limit reaches the box height |d_i| / that on axis i.
+double unit_box(const MachineLimits& limits, const AxisVector& d) {
     double t = 0.0;
     for (int k = 0; k < limits.axes; ++k)
         if (limits.axis[k].max_acceleration > 0.0) t = std::max(t, std::abs(d[k]) / limits.axis[k].max_acceleration);
-    return t > 0.0 ? std::abs(d[i]) / t : 0.0;
+    return t;
+}
+
+double height(double unit_box, const AxisVector& d, int i) { return unit_box > 0.0 ? std::abs(d[i]) / unit_box : 0.0; }
+
+// needs_gap for the directions sx x and sy y (signs of +-1: the products' signs are the same),
+// with their unit boxes (< 0: found here when an axis first needs them).
+bool gap_between(const SpacingRules& rules, const AxisVector& x, double sx, double& box_x, const AxisVector& y, double sy,
+                 double& box_y) {
+    if (!(rules.t2 > 0.0)) return false;  // no jerk limit: nothing to smooth
+    for (int i = 0; i < rules.limits.axes; ++i) {
+        if (!((sx * x[i]) * (sy * y[i]) < 0.0)) continue;
+        const double j = rules.limits.axis[i].max_jerk;
+        if (!(j > 0.0)) continue;
+        if (box_x < 0.0) box_x = unit_box(rules.limits, x);
+        if (box_y < 0.0) box_y = unit_box(rules.limits, y);
+        if (height(box_x, x, i) + height(box_y, y, i) > j * rules.t2 * (1.0 + 1e-12)) return true;
+    }
+    return false;
+}
+
+// A step as profile_legs sees it: its shape's numbers, its direction sign * *direction. (No
+// default values: profile_legs fills the ones it uses, every call.)
+struct StepView {
+    double box;
+    double t2;
+    const AxisVector* direction;
+    double sign;
+    bool none;      // no step (box 0, no direction)
+    double unit_box;
+    int role;       // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit (-1: none)
+};
+
+StepView view(const StepShape& shape, int role = -1) {
+    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role};
+}
+
+// GapMemo's entry for two roles (the gap is symmetric: the same products and sums); -1: none.
+int memo_pair(int x, int y) {
+    if (x > y) std::swap(x, y);
+    constexpr int index[4][4] = {{-1, 0, 1, 2}, {-1, 3, 4, 5}, {-1, -1, 6, 7}, {-1, -1, -1, -1}};
+    return x < 0 ? -1 : index[x][y];
+}
+
+bool find_gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo, int k) {
+    const bool needed = gap_between(rules, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
+    if (k >= 0) memo->pair[k] = needed ? 2 : 1;
+    return needed;
+}
+
+// (Small enough to inline where profile_legs asks it: most answers come from the memo.)
+inline bool gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
+    const int k = memo != nullptr ? memo_pair(x.role, y.role) : -1;
+    if (k >= 0 && memo->pair[k] != 0) return memo->pair[k] == 2;
+    return find_gap(rules, x, y, memo, k);
+}
+
+// SpacingRules::spacing of two views.
+double spacing(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo = nullptr) {
+    // Kernels start in the steps' order (each freezes when its kernel starts): a wider y waits
+    // for half the difference.
+    const double in_order = 0.5 * ((y.box + y.t2) - (x.box + x.t2));
+    if (x.none) return std::max(0.5 * y.box, in_order);  // no step
+    if (y.none) return std::max(0.5 * x.box, in_order);
+    if (x.t2 != y.t2) return 0.5 * (x.box + x.t2 + y.box + y.t2);
+    return 0.5 * (x.box + y.box) + (x.t2 == rules.t2 && gap(rules, x, y, memo) ? rules.t2 : 0.0);
 }
 
 }  // namespace
 
 bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y) const {
-    if (!(t2 > 0.0)) return false;  // no jerk limit: nothing to smooth
-    for (int i = 0; i < limits.axes; ++i) {
-        if (!(x[i] * y[i] < 0.0)) continue;
-        const double j = limits.axis[i].max_jerk;
-        if (!(j > 0.0)) continue;
-        if (height(limits, x, i) + height(limits, y, i) > j * t2 * (1.0 + 1e-12)) return true;
-    }
-    return false;
+    double box_x = -1.0, box_y = -1.0;
+    return gap_between(*this, x, 1.0, box_x, y, 1.0, box_y);
 }
 
+double SpacingRules::unit_box(const AxisVector& d) const { return firtp::unit_box(limits, d); }
+
 double SpacingRules::spacing(const StepShape& x, const StepShape& y) const {
-    // Kernels start in the steps' order (each freezes when its kernel starts): a wider y waits
-    // for half the difference.
-    const double in_order = 0.5 * ((y.box + y.t2) - (x.box + x.t2));
-    if (x.box <= 0.0 && x.direction.isZero()) return std::max(0.5 * y.box, in_order);  // no step
-    if (y.box <= 0.0 && y.direction.isZero()) return std::max(0.5 * x.box, in_order);
-    if (x.t2 != y.t2) return 0.5 * (x.box + x.t2 + y.box + y.t2);
-    return 0.5 * (x.box + y.box) + (x.t2 == t2 && needs_gap(x.direction, y.direction) ? t2 : 0.0);
+    StepView vx = view(x), vy = view(y);
+    return firtp::spacing(*this, vx, vy);
 }
 
 ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, double a, double p, double b) {
     // The steps in order and the speed of the leg after each: in, [a -> p], [p -> b], out.
-    std::array<StepShape, 4> steps;
+    // (Views of the shapes, not copies: each step's unit box is found once, when a gap needs it.)
+    std::array<StepView, 4> steps;
     std::array<double, 3> speed{};
     std::array<int, 3> leg{};  // which of x0, xp, x1 each gap between steps is
     int n = 0;
-    steps[n] = block.in;
+    steps[n] = view(block.in, 0);
     if (p != a) {
         speed[n] = a, leg[n] = 0;
-        steps[++n] = {std::abs(p - a) * block.alpha, (p > a ? 1.0 : -1.0) * block.u, rules.t2};
+        steps[++n] = {std::abs(p - a) * block.alpha, rules.t2, &block.u, p > a ? 1.0 : -1.0, false, block.u_unit_box, p > a ? 1 : 2};
     }
     if (b != p) {
         speed[n] = p, leg[n] = n == 0 ? 0 : 1;
-        steps[++n] = {std::abs(b - p) * block.alpha, (b > p ? 1.0 : -1.0) * block.u, rules.t2};
+        steps[++n] = {std::abs(b - p) * block.alpha, rules.t2, &block.u, b > p ? 1.0 : -1.0, false, block.u_unit_box, b > p ? 1 : 2};
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
-    steps[++n] = block.out;
+    steps[++n] = view(block.out, 3);
     std::array<double, 3> x{};
-    for (int i = 0; i < n; ++i) x[i] = rules.spacing(steps[i], steps[i + 1]);
+    for (int i = 0; i < n; ++i) x[i] = spacing(rules, steps[i], steps[i + 1], block.gaps);
     // The reserves keep T2 between a neighbour's ramp and this block's boxes across each junction;
     // a jerk gap between the junction step and the next box here does that already. For one leg
     // both junctions' reserves fall into it (with a gap between its two steps, either suffices).
@@ -76,8 +133,7 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     // Steps further apart than neighbours: boxes of opposite sign on an axis keep T2 between them.
     for (int i = 0; i + 2 <= n; ++i)
         for (int k = i + 2; k <= n; ++k) {
-            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 ||
-                !rules.needs_gap(steps[i].direction, steps[k].direction))
+            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || !gap(rules, steps[i], steps[k], block.gaps))
                 continue;
             double apart = 0.0;
             for (int m = i; m < k; ++m) apart += x[m];

@@ -88,6 +88,7 @@ private:
         double feed = 0.0;       // at 100 %, capped by the axis velocity limits along u
         double feed_max = 0.0;   // at the highest override
         double alpha = 0.0;      // T1 per unit of speed change along u (in its regime)
+        double u_box = -1.0;     // rules_.unit_box(u): the spacing rules' jerk gaps (any regime)
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
@@ -106,6 +107,7 @@ private:
         std::int64_t line = 0;
         // The junction after it (valid once the next segment exists; the last one ends in a stop).
         Turn turn;
+        double turn_box = -1.0;    // rules_.unit_box(turn.direction)
         Kind kind = Kind::stop;
         Regime junction;           // the junction step's smoothing
         double turn_alpha = 0.0;   // its T1 per unit of corner speed, in that regime
@@ -159,8 +161,13 @@ private:
         double rest = 0.0;       // at rest: the next start step comes at least this long after it
     };
 
-    Segment& seg(std::size_t i) { return segments_[(head_ + i) % segments_.size()]; }
-    const Segment& seg(std::size_t i) const { return segments_[(head_ + i) % segments_.size()]; }
+    // i <= count_ <= the ring's size: one wrap at most (no division: seg() is called millions of times).
+    std::size_t ring(std::size_t i) const {
+        const std::size_t k = head_ + i;
+        return k < segments_.size() ? k : k - segments_.size();
+    }
+    Segment& seg(std::size_t i) { return segments_[ring(i)]; }
+    const Segment& seg(std::size_t i) const { return segments_[ring(i)]; }
     double seg_length(std::size_t i) const { return i == 0 ? seg(0).length - frozen_.consumed : seg(i).length; }
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
@@ -179,7 +186,6 @@ private:
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
     StepShape exit_shape(std::size_t i, double b) const;
-    double entry_width(std::size_t i, double a) const;  // kernel width of the step entering segment i at a
 
     // Geometry and caps.
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
@@ -197,10 +203,46 @@ private:
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
     double max_entry(std::size_t i, double exit_max) const;
-    bool dense_ok(std::size_t i, double b, double a) const;  // the dense junction after i
+    // What dense_ok needs of junction i that does not depend on the speeds (found once a search).
+    struct DenseJunction {
+        std::size_t i = 0;
+        const Segment* s = nullptr;
+        const Segment* n = nullptr;
+        double length = 0.0;      // seg_length(i)
+        bool bounded = false;     // a turn with a tolerance: the estimate is checked
+        AxisVector m = AxisVector::Zero();  // the turn's bisector, unit(u + u')
+        double epsilon = 0.0;     // the tolerance the estimate is held to
+        // The width of the step entering segment i at b, its case found once: the frozen step's
+        // (fixed), b * scale + t2, or (dense before) a junction step's box found at each speed + t2.
+        bool width_fixed = false;
+        const Segment* dense_before = nullptr;
+        double width_scale = 0.0, width_add = 0.0;
+    };
+    DenseJunction dense_junction(std::size_t i) const;
+    bool dense_ok(const DenseJunction& j, double b, double a) const;  // the dense junction after j.i
     double dense_exit_max(std::size_t i, double next_entry_max) const;
     ProfileInput profile_input(std::size_t i, double a, double b) const;
     bool fits(std::size_t i, double a, double p, double b) const;
+    // profile_input() and fits() of segment i at many speeds (a search): the parts that do not
+    // depend on the speeds are found once, the rest as profile_input() finds them.
+    class Fitting {
+    public:
+        Fitting(const Lookahead& lookahead, std::size_t i);
+        Fitting(const Fitting&) = delete;  // in_ points at its own gaps_
+        Fitting& operator=(const Fitting&) = delete;
+        const ProfileInput& input(double a, double b);
+        bool operator()(double a, double p, double b) { return profile_legs(la_.rules_, input(a, b), a, p, b).fits; }
+
+    private:
+        const Lookahead& la_;
+        std::size_t i_;
+        ProfileInput in_;
+        bool entry_fixed_ = false;   // the frozen step: the same at any speed
+        bool entry_scaled_ = false;  // box = a * in_scale_ (else: entry_shape() at each speed)
+        double in_scale_ = 0.0, out_scale_ = 0.0;  // the exit's box = b * out_scale_
+        bool corner_in_ = false, corner_out_ = false;
+        GapMemo gaps_;  // the directions stay the same unless the entry is a dense junction
+    };
 
     // Motion.
     double frozen_centre() const;           // seconds from the timeline's now

@@ -20,6 +20,7 @@
 #include <firtp/types.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <span>
 
 namespace firtp {
@@ -68,13 +69,20 @@ public:
     LimitCheck check(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits,
                      double period);
 
+    // A step's jumps: jump (the first limits.axes entries) in the derivative of order `order`
+    // (1 velocity, 2 acceleration, 3 jerk) at some of its knots, -jump at the others.
+    struct Edge {
+        AxisVector jump;
+        int order;
+    };
     struct Knot {
         double t;
-        AxisVector value;  // the jump
-        int order;         // of the derivative that jumps: 1 velocity, 2 acceleration, 3 jerk
+        std::uint32_t edge;
+        std::uint32_t flip;  // 1: -jump
     };
 
 private:
+    std::vector<Edge> edges_;
     std::vector<Knot> knots_;
 };
 

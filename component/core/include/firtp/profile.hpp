@@ -16,6 +16,9 @@
 #include <firtp/parameters.hpp>
 #include <firtp/types.hpp>
 
+#include <array>
+#include <cstdint>
+
 namespace firtp {
 
 // One end of a step as the spacing rules see it: the box width T1, the direction of dV and the
@@ -24,6 +27,7 @@ struct StepShape {
     double box = 0.0;                       // T1, s (0: no step)
     AxisVector direction = AxisVector::Zero();  // of dV (unit or zero)
     double t2 = 0.0;
+    double unit_box = -1.0;  // SpacingRules::unit_box(direction), where the caller knows it (< 0: not)
 };
 
 // The shared constants of the spacing rules.
@@ -38,6 +42,15 @@ struct SpacingRules {
     // True when boxes in directions x and y need a jerk gap of T2 between them (opposite signs on
     // an axis whose accelerations at the limit would swing by more than J T2).
     bool needs_gap(const AxisVector& x, const AxisVector& y) const;
+    // T1 per unit of a step in direction d, max_a |d_a| / A_a (the same for -d): the box heights
+    // the jerk gaps compare are |d_a| / that.
+    double unit_box(const AxisVector& d) const;
+};
+
+// Whether the steps of one block's profile need jerk gaps, kept across the calls of a search whose
+// step directions do not change (the entry's, +-u, the exit's): 0 not known yet, 1 no, 2 yes.
+struct GapMemo {
+    std::array<std::uint8_t, 8> pair{};
 };
 
 // A long block between its end steps, at given entry, cruise and exit speeds.
@@ -45,6 +58,7 @@ struct ProfileInput {
     double length = 0.0;
     double alpha = 0.0;          // T1 per unit of speed change along the block: max_a |u_a| / A_a
     AxisVector u = AxisVector::Zero();
+    double u_unit_box = -1.0;    // SpacingRules::unit_box(u), where the caller knows it (< 0: not)
     StepShape in;                // the step at the start (before the entry leg)
     StepShape out;               // the step at the end (after the exit leg)
     // Extra time on the entry and exit legs: across a junction, this block's ramps and the
@@ -54,6 +68,8 @@ struct ProfileInput {
     // The entry step is already under way: its centre was this long ago (command time), and the
     // next step's kernel must not start before now. -inf: no such constraint.
     double entry_elapsed = -1e300;
+    // Where a search keeps the jerk gaps of these directions (nullptr: found at each call).
+    GapMemo* gaps = nullptr;
 };
 
 struct ProfileLegs {

@@ -1,0 +1,270 @@
+// The closed-form checks give, bit for bit, what their first, plainer forms gave (main at e606b27,
+// with 5c02b7e's knots taken together at one time and a negligible second stage as one stage): the
+// limit sweep sorted whole knots over all nine axes, and the sums visited every leg within reach. Their faster forms (docs/BENCHMARKS.md, "Planning cost") must not change a single plan,
+// so each is held here to that reference on random legs made to hit the awkward cases: knots at
+// the same time (a leg's fall is the next one's rise), one-stage and sharp kernels, motion at and
+// just past the limits, legs that have not begun.
+#include <firtp/motion_check.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+using namespace firtp;
+
+namespace {
+
+// ---- Reference: the sweep as it was ------------------------------------------------------------
+
+struct RefKnot {
+    double t;
+    AxisVector value;
+    int order;
+};
+
+void ref_stages(const Kernel& k, double& a, double& b) {
+    a = k.a;
+    b = k.b;
+}
+
+std::size_t ref_add_knots(std::vector<RefKnot>& knots, std::size_t n, const AxisVector& dv, double start, const Kernel& k,
+                          double from, double to, AxisVector& v, AxisVector& a, AxisVector& j) {
+    double ta = 0.0, tb = 0.0;
+    ref_stages(k, ta, tb);
+    auto add = [&](double t, const AxisVector& value, int order) {
+        if (t > from || (t == from && t == start)) {
+            if (t <= to && n < knots.size()) knots[n++] = {t, value, order};
+            return;
+        }
+        const double dt = from - t;
+        if (order == 3) j += value, a += value * dt, v += value * (0.5 * dt * dt);
+        else if (order == 2) a += value, v += value * dt;
+        else v += value;
+    };
+    if (ta <= 0.0) {
+        add(start, dv, 1);
+    } else if (tb <= 1e-9 * ta) {  // a negligible second stage: one stage (5c02b7e)
+        add(start, dv / ta, 2);
+        add(start + ta, -dv / ta, 2);
+    } else {
+        const AxisVector jk = dv / (ta * tb);
+        add(start, jk, 3);
+        add(start + tb, -jk, 3);
+        add(start + ta, -jk, 3);
+        add(start + ta + tb, jk, 3);
+    }
+    return n;
+}
+
+LimitCheck ref_check(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits, double period) {
+    constexpr double slack = 1.0 + 1e-9;
+    std::vector<RefKnot> knots(legs.size() * 8);
+    std::size_t n = 0;
+    AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
+    for (const TimedLeg& leg : legs) {
+        if (!(leg.tv > 0.0)) continue;
+        const AxisVector dv = leg.delta / leg.tv;
+        const double starts[2] = {leg.rise, leg.rise + leg.fall};
+        const Kernel* kernels[2] = {&leg.rising, &leg.falling};
+        for (int e = 0; e < 2; ++e) {
+            const AxisVector step = e == 0 ? dv : AxisVector(-dv);
+            n = ref_add_knots(knots, n, step, starts[e], *kernels[e], from, to, v, a, j);
+        }
+    }
+    std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n),
+              [](const RefKnot& x, const RefKnot& y) { return x.t < y.t; });
+    LimitCheck result;
+    auto over = [&](double value, double limit, double t, int axis, int derivative) {
+        if (limit > 0.0 && std::abs(value) > limit * slack && result.ok) result = {false, t, axis, derivative, value};
+    };
+    auto state = [&](double t) {
+        for (int i = 0; i < limits.axes; ++i) {
+            over(v[i], limits.axis[i].max_velocity, t, i, 1);
+            over(a[i], limits.axis[i].max_acceleration, t, i, 2);
+        }
+    };
+    state(from);
+    double t = from;
+    for (std::size_t k = 0; k <= n; ++k) {
+        const double next = k < n ? knots[k].t : to;
+        const double dt = next - t;
+        if (dt > 0.0) {
+            const bool real = dt > 1e-9;
+            for (int i = 0; i < limits.axes; ++i) {
+                if (real) over(j[i], limits.axis[i].max_jerk, t, i, 3);
+                if (j[i] != 0.0) {
+                    const double tz = -a[i] / j[i];
+                    if (tz > 0.0 && tz < dt) over(v[i] + a[i] * tz + 0.5 * j[i] * tz * tz, limits.axis[i].max_velocity, t + tz, i, 1);
+                }
+            }
+            v += a * dt + j * (0.5 * dt * dt);
+            a += j * dt;
+            t = next;
+            state(t);
+        }
+        if (k == n) break;
+        // The knots within 1e-12 s of each other at once (5c02b7e).
+        AxisVector jump = AxisVector::Zero();
+        bool jumps = false;
+        for (; k < n && knots[k].t <= t + 1e-12; ++k) {
+            const RefKnot& knot = knots[k];
+            if (knot.order == 2) jump += knot.value, jumps = true;
+            (knot.order == 3 ? j : knot.order == 2 ? a : v) += knot.value;
+        }
+        --k;
+        if (jumps)
+            for (int i = 0; i < limits.axes; ++i)
+                if (jump[i] != 0.0) over(jump[i] / period, limits.axis[i].max_jerk, t, i, 3);
+        state(t);
+        if (!result.ok) break;
+    }
+    return result;
+}
+
+// ---- Reference: the sums as they were ----------------------------------------------------------
+
+AxisState ref_relative_state(std::span<const TimedLeg> legs, std::size_t corner, double t) {
+    AxisState s;
+    s.time = t;
+    std::size_t lo = 0, hi = legs.size();
+    const double reach = legs.front().reach;
+    if (reach > 0.0) {
+        const double margin = 1e-9 + 1e-12 * std::abs(t);
+        lo = static_cast<std::size_t>(std::partition_point(legs.begin(), legs.end(), [&](const TimedLeg& l) {
+                                          return l.fall_centre + reach < t - margin;
+                                      }) - legs.begin());
+        hi = static_cast<std::size_t>(std::partition_point(legs.begin() + static_cast<std::ptrdiff_t>(lo), legs.end(),
+                                                           [&](const TimedLeg& l) { return l.rise_centre - reach <= t + margin; }) -
+                                      legs.begin());
+        const AxisVector& corner_end = corner + 1 < legs.size() ? legs[corner + 1].before : AxisVector(legs[corner].before + legs[corner].delta);
+        const AxisVector done = lo < legs.size() ? legs[lo].before : AxisVector(legs.back().before + legs.back().delta);
+        const AxisVector waiting = hi < legs.size() ? legs[hi].before : AxisVector(legs.back().before + legs.back().delta);
+        if (lo > corner + 1) s.position += done - corner_end;
+        if (hi <= corner) s.position -= corner_end - waiting;
+    }
+    const int axes = legs.front().axes;
+    for (std::size_t k = lo; k < hi; ++k) {
+        const TimedLeg& leg = legs[k];
+        if (!(leg.tv > 0.0)) continue;
+        const double sign = k <= corner ? 1.0 : 0.0;
+        const StepSample up = leg.rising.step(t - leg.rise);
+        const StepSample down = leg.falling.step(t - leg.rise - leg.fall);
+        const double p = (up.position - down.position) / leg.tv - sign;
+        const double v = (up.velocity - down.velocity) / leg.tv;
+        const double a = (up.acceleration - down.acceleration) / leg.tv;
+        const double j = (up.jerk - down.jerk) / leg.tv;
+        for (int i = 0; i < axes; ++i) {
+            const double d = leg.delta[i];
+            s.position[i] += d * p;
+            s.velocity[i] += d * v;
+            s.acceleration[i] += d * a;
+            s.jerk[i] += d * j;
+        }
+    }
+    return s;
+}
+
+// ---- Random legs -------------------------------------------------------------------------------
+
+// A chain of legs as the look-ahead builds them: each leg's falling step is the next one's rising
+// step (often at exactly the same time: ties), kernels of two stages, now and then one stage or a
+// sharp step; speeds near what `limits` allow, so that some sets pass and some do not.
+std::vector<TimedLeg> random_legs(std::mt19937_64& rng, int axes, int count) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), speed(20.0, 320.0), duration(0.0005, 0.04), t1(0.0, 0.06);
+    std::uniform_int_distribution<int> kind(0, 9);
+    std::vector<TimedLeg> legs;
+    double centre = 0.0;
+    Kernel step = two_stage(0.03, 0.02);
+    for (int k = 0; k < count; ++k) {
+        AxisVector u = AxisVector::Zero();
+        for (int i = 0; i < axes; ++i) u[i] = unit(rng);
+        u.normalize();
+        const double tv = duration(rng);
+        Kernel next;
+        const int which = kind(rng);
+        if (which == 0) next = Kernel{};                          // sharp
+        else if (which == 1) next = two_stage(t1(rng), 0.0);      // one stage
+        else if (which == 2) next = step;                         // the same kernel again: ties
+        else next = two_stage(t1(rng), 0.02);
+        TimedLeg leg;
+        leg.tv = tv;
+        leg.delta = u * (speed(rng) * tv);
+        leg.rise = centre - 0.5 * step.width();
+        leg.fall = (centre + tv - 0.5 * next.width()) - leg.rise;
+        leg.rising = step;
+        leg.falling = next;
+        legs.push_back(leg);
+        centre += tv;
+        step = next;
+    }
+    return legs;
+}
+
+// A machine `scale` times stronger than 300 mm/s, 5000 mm/s^2, 1e5 mm/s^3 (the axes a little apart).
+MachineLimits limits_of(int axes, double scale) {
+    MachineLimits m;
+    m.axes = axes;
+    for (int i = 0; i < axes; ++i) m.axis[i] = {300.0 * scale, (5000.0 + 1000.0 * i) * scale, 1e5 * (1.0 + 0.5 * i) * scale};
+    return m;
+}
+
+bool same(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+}  // namespace
+
+TEST(MotionCheckReference, LimitSweepGivesTheSameResultBitForBit) {
+    std::mt19937_64 rng(13);
+    int failed = 0, passed = 0;
+    std::uniform_real_distribution<double> strength(0.0, std::log(400.0));
+    for (int axes : {1, 2, 3, 5, 9}) {
+        LimitSweep sweep(256);
+        for (int run = 0; run < 300; ++run) {
+            const MachineLimits limits = limits_of(axes, std::exp(strength(rng)));
+            const std::vector<TimedLeg> legs = random_legs(rng, axes, 2 + static_cast<int>(rng() % 40));
+            const double end = legs.back().finish();
+            std::uniform_real_distribution<double> cut(-0.05, 0.5 * end);
+            const double from = std::max(0.0, cut(rng));
+            const LimitCheck got = sweep.check(legs, from, end, limits, 0.001);
+            const LimitCheck want = ref_check(legs, from, end, limits, 0.001);
+            ASSERT_EQ(got.ok, want.ok) << "axes " << axes << " run " << run;
+            ASSERT_TRUE(same(got.time, want.time) && got.axis == want.axis && got.derivative == want.derivative &&
+                        same(got.value, want.value))
+                << "axes " << axes << " run " << run << ": " << got.time << " " << got.value << " against " << want.time
+                << " " << want.value;
+            (got.ok ? passed : failed) += 1;
+        }
+    }
+    // Both outcomes were tried (else the comparison proves little).
+    EXPECT_GT(passed, 100);
+    EXPECT_GT(failed, 100);
+}
+
+TEST(MotionCheckReference, SumsOverTheLegsGiveTheSameStateBitForBit) {
+    std::mt19937_64 rng(17);
+    for (int axes : {1, 3, 4, 9}) {
+        for (int run = 0; run < 200; ++run) {
+            std::vector<TimedLeg> legs = random_legs(rng, axes, 3 + static_cast<int>(rng() % 30));
+            index_legs(legs);
+            const std::size_t corner = rng() % (legs.size() - 1);
+            const double end = legs.back().finish();
+            for (int k = 0; k < 40; ++k) {
+                const double t = end * (static_cast<double>(k) / 39.0) - 0.01;
+                const AxisState got = relative_state(legs, corner, t);
+                const AxisVector position = relative_position(legs, corner, t);
+                const AxisState want = ref_relative_state(legs, corner, t);
+                for (int i = 0; i < max_axes; ++i) {
+                    // == rather than the bits: a leg that has not begun may leave a zero's sign.
+                    ASSERT_EQ(got.position[i], want.position[i]) << "axes " << axes << " run " << run << " t " << t;
+                    ASSERT_EQ(position[i], want.position[i]);
+                    ASSERT_EQ(got.velocity[i], want.velocity[i]);
+                    ASSERT_EQ(got.acceleration[i], want.acceleration[i]);
+                    ASSERT_EQ(got.jerk[i], want.jerk[i]);
+                }
+            }
+        }
+    }
+}
