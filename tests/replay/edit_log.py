@@ -6,6 +6,9 @@
    edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL
    edit_log.py IN OUT nudge CHANNEL INDEX  change the lowest bit of position X in the INDEX-th axis state,
                                            crc recomputed (an intact message that says something else)
+   edit_log.py IN OUT append LOG2         IN's events, then LOG2's: two runs of the component in one log
+   edit_log.py IN OUT from CHANNEL INDEX   leave out everything before the INDEX-th event on CHANNEL but
+                                           FIRTP_CONFIG (a recorder started late)
    edit_log.py IN OUT old CHANNEL          every axis state as firtp wrote it before control_session and
                                            control_seq: that type's fingerprint, without those 16 bytes, sealed
 """
@@ -42,7 +45,17 @@ def main():
     src, dst, op, channel = sys.argv[1:5]
     arg = int(sys.argv[5]) if len(sys.argv) > 5 else 0
     out, seen = [], 0
+    if op == "append":
+        out = list(events(src)) + list(events(channel))
+        src, channel = "/dev/null", ""
+    started = op != "from"
     for utime, ch, payload in events(src):
+        if op == "from" and ch.decode() == channel and seen + 1 == arg:
+            started = True
+        if not started and ch.decode() != "FIRTP_CONFIG":
+            if ch.decode() == channel:
+                seen += 1
+            continue
         if ch.decode() != channel:
             out.append((utime, ch, payload))
             continue

@@ -61,6 +61,28 @@ expect "a corrupted block" 1 "event [0-9]+ on FIRTP_BLOCK: corrupted: CRC mismat
 expect "no such log" 1 "no log file" "$firtp" replay "$work/none.lcmlog"
 expect "no log given" 2 "missing LOG.lcmlog" "$firtp" replay
 
+# Several runs of the component in one log (FIRTP_CONFIG's seq starts again: serve run twice, a
+# restarted LinuxCNC): replayed run by run, each with its own machine; --run N replays one.
+python3 "$dir/edit_log.py" "$log" "$work/two_runs.lcmlog" append "$controls"
+expect "two runs: both equal" 0 "^all runs +2 equal" "$firtp" replay "$work/two_runs.lcmlog"
+expect "two runs: the second's events" 0 "^run +2 \\(log events 1421-5410\\)" "$firtp" replay "$work/two_runs.lcmlog"
+expect "--run 2: its controls" 0 "^fed +5 blocks and 21 controls in the periods" "$firtp" replay "$work/two_runs.lcmlog" --run 2
+expect "--run 3: no such run" 1 "holds 2 runs of the component, not a run 3" "$firtp" replay "$work/two_runs.lcmlog" --run 3
+python3 "$dir/edit_log.py" "$log" "$work/two_nudged.lcmlog" append "$work/nudged.lcmlog"
+expect "two runs: the second differs" 4 "^all runs +1 of 2 DIFFERENT" "$firtp" replay "$work/two_nudged.lcmlog"
+# A run that starts with a running component (firtp-lcm-bridge restarted under firtp.so, or the
+# recorder started late): refused, naming the run and its first tick; the run before replays alone.
+python3 "$dir/edit_log.py" "$log" "$work/late.lcmlog" from FIRTP_AXIS_STATE 300
+python3 "$dir/edit_log.py" "$log" "$work/restarted.lcmlog" append "$work/late.lcmlog"
+expect "a run from tick 299: refused" 1 \
+  "run 2 of 2 \\(log events [0-9]+-[0-9]+\\): its first axis state \\(FIRTP_AXIS_STATE seq 300, event [0-9]+\\) is tick 299, not the component's first period" \
+  "$firtp" replay "$work/restarted.lcmlog"
+expect "the run before it, alone" 0 "result +equal" "$firtp" replay "$work/restarted.lcmlog" --run 1
+# Restarted without a FIRTP_CONFIG of its own: the axis states start again at seq 1, named.
+python3 "$dir/edit_log.py" "$work/no_config.lcmlog" "$work/no_config_twice.lcmlog" append "$work/no_config.lcmlog"
+expect "a restart without FIRTP_CONFIG" 1 "the axis states start again at FIRTP_AXIS_STATE seq 1 \\(event [0-9]+\\) without a new FIRTP_CONFIG" \
+  "$firtp" replay "$work/no_config_twice.lcmlog" --ini "$examples/diamond.ini"
+
 # The recorder's accounting, fed by LCM's file:// provider (the same receive path as udpm://).
 expect "record: nothing lost" 0 "nothing lost" \
   "$firtp" record "$work/copy.lcmlog" --lcm-url "file://$log?speed=0" --idle 1 --duration 30

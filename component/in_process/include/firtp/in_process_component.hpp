@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace firtp {
 
@@ -22,11 +24,25 @@ struct InProcessSettings {
     int stream_depth = defaults::stream_depth;  // records the block stream holds: with queue, how far ahead a host may send
 };
 
+// firtp.so's machine as loadrt arguments, all but InProcessSettings' (axes=3 period_ns=...
+// tolerance=... max_velocity=...), and the two numbers the chain needs from them.
+struct ModuleMachine {
+    int axes = 3;
+    double period = defaults::servo_period;  // s
+    std::vector<std::string> arguments;
+};
+
+// A machine's planner settings, exactly (shortest text that reads back as the same double).
+ModuleMachine module_machine(const MachineConfig& machine);
+
 class InProcessComponent {
 public:
     // Loads firtp.so with the machine's settings, creates the bridge and nets them. Throws
     // std::runtime_error naming the step that failed.
     InProcessComponent(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
+               const InProcessSettings& settings = {});
+    // The same with firtp.so's loadrt arguments given (e.g. as LinuxCNC loaded it, from a log).
+    InProcessComponent(lcm::LCM& lcm, const ModuleMachine& machine, const std::filesystem::path& module,
                const InProcessSettings& settings = {});
     ~InProcessComponent();
     InProcessComponent(const InProcessComponent&) = delete;
