@@ -21,6 +21,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 namespace firtp::cli {
 namespace {
@@ -172,15 +173,18 @@ bool replay_run(const LoggedRun& run, const ReplayOptions& options) {
         for (const LoggedEvent* e : inputs) lcm->publish(e->channel, e->data.data(), static_cast<unsigned>(e->data.size()));
     };
     Progress progress(run.states.size());
-    const std::int64_t first_tick = run.states.front().tick;
+    // From the component's first period, as recorded: a log that starts later (the recorder
+    // started a little after the component, nothing taken yet) skips the states before it.
     std::int64_t periods = 0;
     for (std::size_t i = 0; i < run.states.size(); ++i) {
         publish(schedule.before[i]);
-        for (const std::int64_t wanted = run.states[i].tick - first_tick + 1; periods < wanted; ++periods) period();
+        for (const std::int64_t wanted = run.states[i].tick + 1; periods < wanted; ++periods) period();
         progress.update(i);
     }
     progress.done();
     if (collector.problem) throw std::runtime_error(*collector.problem);
+    const std::int64_t first_tick = run.states.front().tick;
+    std::erase_if(collector.states, [&](const firtp_lcm::axis_state_t& s) { return s.tick < first_tick; });
 
     const Comparison c = compare_states(run.states, collector.states, component.machine.axes, options.tolerance);
     std::cout << "machine      " << component.description << "\n"

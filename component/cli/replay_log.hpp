@@ -38,7 +38,8 @@ struct LoggedRun {
 // `only` (1-based): read and check that run alone. Throws std::runtime_error naming the log, the
 // event and, in a log of several runs, the run: unreadable, a corrupted message, axis states
 // missing (seq gaps) or starting again without a new FIRTP_CONFIG, a run whose first axis state is
-// not its component's first period (tick 0: it ran before the log, its state is not in it), a
+// not its component's first period (tick 0) and names blocks or controls taken before (its state
+// then is not in the log), a
 // program whose blocks do not start at seq 1 or have gaps, axis states of the type before they
 // named the control applied in their period (control_session, control_seq): such logs are refused,
 // the replay could not place the controls (docs/RECORDING.md).

@@ -22,8 +22,7 @@ with --plan every moving period equal to `firtp plan NGC --ini INI` within --wit
 lcm-logger's log is counted by firtp-lcm-dump and reported. With --replay, `firtp record` records
 beside them (it must lose nothing) and `firtp replay` runs on its log with nothing else: the log
 carries the machine as firtp-lcm-bridge published it (FIRTP_CONFIG, firtp.so's settings in effect),
-and the replay must be equal bit for bit, every block placed by the axis states (or, where the
-enable period moved the rounding, within 1e-9 relative: see record_and_replay); with
+and the replay must be equal bit for bit, every block placed by the axis states; with
 --replay-refused TEXT it must instead exit 1 saying TEXT (a log it cannot replay, e.g. LinuxCNC's
 own motion with no FIRTP_BLOCK in it). Exit 0 passed, 1 failed, 77 skipped.
 """
@@ -41,7 +40,6 @@ sys.path.insert(0, EXAMPLES)
 import run as lcnc_run  # noqa: E402  (examples/linuxcnc/run.py: placing modules, INI edits, running as nobody)
 
 SKIP = 77
-ROUNDING = "1e-9"  # relative: what a replay may differ by when not bit for bit (record_and_replay)
 
 
 def ini_of(config):
@@ -110,15 +108,7 @@ def record_and_replay(work, a):
         if replay.returncode != 1 or a.replay_refused not in replay.stderr:
             failed.append("firtp replay: expected exit 1 saying '%s'" % a.replay_refused)
         return failed
-    if replay.returncode == 4:
-        # Outside the log: the period LinuxCNC's "machine on" enabled firtp.so (firtp.enable). The
-        # planner's clock counts the enabled periods, the replay enables at tick 0: in 2 of 5 arcs.ngc
-        # runs that moved the rounding, by at most 2.8e-12 (docs/RECORDING.md). Only that is allowed.
-        near = subprocess.run([a.replay, "replay", log, "--tolerance", ROUNDING], capture_output=True, text=True)
-        print("firtp replay --tolerance %s (exit %d):\n%s%s" % (ROUNDING, near.returncode, near.stdout, near.stderr))
-        if near.returncode != 0:
-            failed.append("firtp replay: differs by more than rounding (%s relative)" % ROUNDING)
-    elif replay.returncode != 0 or not re.search(r"^result +equal$", replay.stdout, re.M):
+    if replay.returncode != 0 or not re.search(r"^result +equal$", replay.stdout, re.M):
         failed.append("firtp replay: not equal (exit %d)" % replay.returncode)
     # the machine from the log: firtp.so's settings as firtp-lcm-bridge read them in LinuxCNC
     if not re.search(r"^machine +firtp-lcm-bridge .*: firtp\.so in LinuxCNC \(.*\.ini\), loadrt firtp axes=",
