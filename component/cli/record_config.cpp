@@ -144,13 +144,13 @@ LoggedComponent component_from(const firtp_lcm::config_t& config) {
     c.settings.max_blocks = config.max_blocks;
     c.settings.stream_depth = config.stream_depth;
     c.settings.plan_budget_us = config.plan_budget_us;
-    c.description = cat(config.sender, ": ", config.command, ", ",
-                        config.ini_file.empty() ? std::string("built-in machine") : config.ini_file);
-    if (config.command == "loadrt") c.description = cat(config.sender, ": firtp.so in LinuxCNC (", config.ini_file.empty() ? std::string("INI not logged") : config.ini_file, "), loadrt firtp");
-    if (!args.empty()) {
-        c.description += config.command == "loadrt" ? "" : ", args";
-        for (const std::string& word : args) c.description.append(" ").append(word);
-    }
+    const bool loaded = config.command == "loadrt";
+    c.description = loaded ? cat(config.sender, ": firtp.so in LinuxCNC (",
+                                 config.ini_file.empty() ? std::string("INI not logged") : config.ini_file, "), loadrt firtp")
+                           : cat(config.sender, ": ", config.command, ", ",
+                                 config.ini_file.empty() ? std::string("built-in machine") : config.ini_file,
+                                 args.empty() ? "" : ", args");
+    for (const std::string& word : args) c.description.append(" ").append(word);
     return c;
 }
 

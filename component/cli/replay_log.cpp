@@ -101,9 +101,11 @@ std::vector<LoggedRun> read_logged_runs(const std::filesystem::path& log, std::o
                 if (!r->empty()) r = &runs.emplace_back();
                 r->run.config.reset();  // a config before anything else is replaced (record --ini, then serve's own)
             }
-            if (!r->run.config) r->run.config = config;
+            if (!r->run.config) {
+                r->run.config = config;
+                if (r->empty()) r->run.first_event = event->eventnum;
+            }
             r->config_seq = config.seq;
-            if (r->empty()) r->run.first_event = event->eventnum;
             r->run.last_event = event->eventnum;
             continue;
         }
