@@ -222,6 +222,9 @@ int replay_command(std::span<const std::string> args) {
         if (runs.size() > 1 || options.run)
             std::cout << "run          " << (options.run ? *options.run : static_cast<int>(k + 1)) << " (log events "
                       << runs[k].first_event << "-" << runs[k].last_event << ")\n";
+        for (const std::size_t i : runs[k].bridge_restarts)
+            std::cout << "restart      of the bridge at FIRTP_AXIS_STATE log event " << runs[k].state_events[i] << " (tick "
+                      << runs[k].states[i].tick << "): the component ran on, one run\n";
         different += replay_run(runs[k], options) ? 0 : 1;
     }
     if (runs.size() > 1)

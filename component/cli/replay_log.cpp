@@ -62,9 +62,11 @@ void check_states(const std::string& where, const LoggedRun& run) {
                                      "before (the recorder started late, or firtp-lcm-bridge was restarted under a ",
                                      "running firtp.so), and its state then is not in the log; record from the ",
                                      "component's start"));
-    for (std::size_t i = 1; i < run.states.size(); ++i) {
+    for (std::size_t i = 1, join = 0; i < run.states.size(); ++i) {
         const std::int64_t missing = run.states[i].seq - run.states[i - 1].seq - 1;
-        if (missing == 0) continue;
+        const bool restarted = join < run.bridge_restarts.size() && run.bridge_restarts[join] == i;
+        if (restarted) ++join;
+        if (missing == 0 || (restarted && run.states[i].seq == 1)) continue;
         const std::string at = cat(" FIRTP_AXIS_STATE seq ", std::to_string(run.states[i].seq), " (event ",
                                    std::to_string(run.state_events[i]), ")");
         if (run.states[i].seq == 1)
@@ -84,6 +86,47 @@ struct RunReader {
     std::int64_t config_seq = 0;  // the last FIRTP_CONFIG's
     bool empty() const { return run.events.empty(); }
 };
+
+bool same_machine(const firtp_lcm::config_t& a, const firtp_lcm::config_t& b) {
+    const bool by_args = a.command == "loadrt";  // firtp.so's words; its INI is only for the reader
+    return a.command == b.command && a.args == b.args &&
+           (by_args || (a.ini_file == b.ini_file && a.ini_text == b.ini_text)) &&
+           a.queue == b.queue && a.max_blocks == b.max_blocks && a.stream_depth == b.stream_depth &&
+           a.plan_budget_us == b.plan_budget_us && a.period == b.period && a.axes == b.axes;
+}
+
+// `next` goes on where `run` ended: its publisher (firtp-lcm-bridge) started again, the component
+// (firtp.so) ran on with the same machine, its ticks consecutive.
+bool continues(const RunReader& run, const RunReader& next) {
+    const LoggedRun &a = run.run, &b = next.run;
+    return a.config && b.config && same_machine(*a.config, *b.config) && !a.states.empty() && !b.states.empty() &&
+           b.states.front().tick == a.states.back().tick + 1;
+}
+
+void append(RunReader& run, RunReader&& next) {
+    LoggedRun &a = run.run, &b = next.run;
+    const std::size_t offset = a.states.size();
+    a.bridge_restarts.push_back(offset);
+    for (LoggedEvent& e : b.events) {
+        if (e.kind == LoggedEvent::Kind::state) e.state += offset;
+        a.events.push_back(std::move(e));
+    }
+    a.states.insert(a.states.end(), b.states.begin(), b.states.end());
+    // The new bridge names the previous one's control generation 0, 0 (it cannot know it) until a
+    // control of its own is applied: that is the control last named before the restart.
+    const firtp_lcm::axis_state_t before = a.states[offset - 1];
+    for (std::size_t i = offset; i < a.states.size() && a.states[i].control_seq == 0; ++i) {
+        a.states[i].control_session = before.control_session;
+        a.states[i].control_seq = before.control_seq;
+    }
+    a.state_events.insert(a.state_events.end(), b.state_events.begin(), b.state_events.end());
+    a.statuses.insert(a.statuses.end(), b.statuses.begin(), b.statuses.end());
+    a.blocks += b.blocks;
+    a.program_events += b.program_events;
+    a.controls += b.controls;
+    a.last_event = b.last_event;
+    for (auto& [program, seqs] : next.programs) run.programs[program].insert(seqs.begin(), seqs.end());
+}
 
 }  // namespace
 
@@ -154,6 +197,14 @@ std::vector<LoggedRun> read_logged_runs(const std::filesystem::path& log, std::o
             continue;
         }
         run.last_event = event->eventnum;
+    }
+    for (std::size_t k = 1; k < runs.size();) {
+        if (continues(runs[k - 1], runs[k])) {
+            append(runs[k - 1], std::move(runs[k]));
+            runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(k));
+        } else {
+            ++k;
+        }
     }
     const int count = static_cast<int>(runs.size());
     if (only && (*only < 1 || *only > count))

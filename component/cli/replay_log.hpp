@@ -26,6 +26,9 @@ struct LoggedEvent {
 struct LoggedRun {
     std::optional<firtp_lcm::config_t> config;  // the run's first FIRTP_CONFIG
     std::int64_t first_event = 0, last_event = 0;  // the log events it spans
+    // States where its publisher started again while the component ran on (firtp-lcm-bridge
+    // restarted under firtp.so: same machine, ticks consecutive, seq from 1): one run of the component.
+    std::vector<std::size_t> bridge_restarts;
     std::vector<LoggedEvent> events;
     std::vector<firtp_lcm::axis_state_t> states;  // FIRTP_AXIS_STATE, in log order
     std::vector<std::int64_t> state_events;       // their event numbers
@@ -34,7 +37,9 @@ struct LoggedRun {
 };
 
 // The runs of the component in a log, in order: a run starts again where FIRTP_CONFIG's seq does
-// (its publisher started again: `firtp serve` run twice, firtp-lcm-bridge or LinuxCNC restarted).
+// (its publisher started again: `firtp serve` run twice, LinuxCNC restarted), except where the
+// publisher was only firtp-lcm-bridge restarted under a running firtp.so (the same machine, the
+// ticks going on): that stays one run (bridge_restarts).
 // `only` (1-based): read and check that run alone. Throws std::runtime_error naming the log, the
 // event and, in a log of several runs, the run: unreadable, a corrupted message, axis states
 // missing (seq gaps) or starting again without a new FIRTP_CONFIG, a run whose first axis state is

@@ -4,7 +4,7 @@ headless, and check what firtp-lcm-bridge published over LCM.
 
     run_config.py CONFIG_DIR --program NGC --bridge firtp-lcm-bridge --module SO --states TOOL
         --check-tool firtp-tp-check [--host firtp] [--dump firtp-lcm-dump] [--plan firtp]
-        [--within MM] [--replay firtp] [-- CHECK OPTIONS]
+        [--within MM] [--replay firtp] [--restart-bridge-at S] [-- CHECK OPTIONS]
 
 CONFIG_DIR's INI is copied into a scratch directory with [DISPLAY]DISPLAY = firtp-headless (no
 screen: E-stop reset, machine on, home, run OPEN_FILE, exit) and the bridge in its bin/. With
@@ -24,7 +24,10 @@ beside them (it must lose nothing) and `firtp replay` runs on its log with nothi
 carries the machine as firtp-lcm-bridge published it (FIRTP_CONFIG, firtp.so's settings in effect),
 and the replay must be equal bit for bit, every block placed by the axis states; with
 --replay-refused TEXT it must instead exit 1 saying TEXT (a log it cannot replay, e.g. LinuxCNC's
-own motion with no FIRTP_BLOCK in it). Exit 0 passed, 1 failed, 77 skipped.
+own motion with no FIRTP_BLOCK in it). --restart-bridge-at S: S seconds into the host's run,
+firtp-lcm-bridge is unloaded and lcm.hal loaded again while firtp.so runs on; the host must still
+finish, the states show one restart with consecutive ticks, and the replay takes both bridges' logs
+as one run of firtp.so. Exit 0 passed, 1 failed, 77 skipped.
 """
 import argparse
 import os
@@ -110,6 +113,9 @@ def record_and_replay(work, a):
         return failed
     if replay.returncode != 0 or not re.search(r"^result +equal$", replay.stdout, re.M):
         failed.append("firtp replay: not equal (exit %d)" % replay.returncode)
+    if a.restart_bridge_at is not None and not re.search(r"^restart +of the bridge at .*: the component ran on, one run$",
+                                                          replay.stdout, re.M):
+        failed.append("firtp replay: the bridge's restart not taken as one run of firtp.so")
     # the machine from the log: firtp.so's settings as firtp-lcm-bridge read them in LinuxCNC
     if not re.search(r"^machine +firtp-lcm-bridge .*: firtp\.so in LinuxCNC \(.*\.ini\), loadrt firtp axes=",
                      replay.stdout, re.M):
@@ -136,12 +142,19 @@ def main():
     parser.add_argument("--operator", default="",
                         help="with --host: shell commands whose output is the host's operator input "
                              "(FIRTP_HOST_INPUT, a named pipe), e.g. 'sleep 0.3; echo hold; sleep 0.5; echo resume'")
+    parser.add_argument("--restart-bridge-at", type=float,
+                        help="with --host: S seconds after the host starts, unload firtp-lcm-bridge and load "
+                             "lcm.hal again (halcmd), while firtp.so runs on")
     parser.add_argument("--replay", help="firtp: record with `firtp record`, then `firtp replay` the log")
     parser.add_argument("--replay-refused", help="with --replay: replay must exit 1 saying this")
     parser.add_argument("--keep", help="copy the logs and recordings here")
     argv = sys.argv[1:]
     checks = argv[argv.index("--") + 1:] if "--" in argv else []
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
+    if a.restart_bridge_at is not None:  # as a user would, from a shell beside the running LinuxCNC
+        a.operator = ("sleep %g; (cd \"$CONFIG\" && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd unload "
+                      "firtp-lcm-bridge && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd -i \"$INI\" "
+                      "-f lcm.hal) > \"$WORK/restart.log\" 2>&1; sleep 10; %s" % (a.restart_bridge_at, a.operator))
     for name in ("program", "bridge", "module", "states", "check_tool", "host", "plan", "dump", "replay"):
         if getattr(a, name) not in (None, "none"):
             setattr(a, name, os.path.abspath(getattr(a, name)))
@@ -204,6 +217,11 @@ def main():
         # axis states name the ones applied, as `firtp replay` needs them.
         if a.operator and re.search(r"^controls +0 named", got.stdout, re.M):
             failed.append("no axis state names an operator control (is firtp.control-gen netted?)")
+        if a.restart_bridge_at is not None:
+            restart_log = os.path.join(work, "restart.log")
+            print("bridge restart:\n" + (open(restart_log).read().strip() if os.path.exists(restart_log) else "(no log)"))
+            if not re.search(r"^restarts +1 of the bridge", got.stdout, re.M):
+                failed.append("the bridge was not restarted once under the running firtp.so")
         check = [a.check_tool, samples, "--ini", ini, "--program", a.program] + checks
         if a.plan:
             plan_csv = os.path.join(work, "plan.csv")

@@ -83,6 +83,12 @@ expect "the run before it, alone" 0 "result +equal" "$firtp" replay "$work/resta
 python3 "$dir/edit_log.py" "$controls" "$work/late_fresh.lcmlog" from FIRTP_AXIS_STATE 18
 expect "started 17 periods late, nothing taken yet" 0 "^compared +3422 states, largest difference 0 " \
   "$firtp" replay "$work/late_fresh.lcmlog"
+# firtp-lcm-bridge started again under a running firtp.so (its FIRTP_CONFIG and the states' seq
+# from 1, the ticks going on, the old bridge's control named 0, 0): one run, equal.
+python3 "$dir/edit_log.py" "$controls" "$work/bridge_restart.lcmlog" restart FIRTP_AXIS_STATE 1500
+expect "a bridge restart: one run" 0 "^restart +of the bridge at FIRTP_AXIS_STATE log event [0-9]+ \\(tick 1499\\): the component ran on, one run$" \
+  "$firtp" replay "$work/bridge_restart.lcmlog"
+expect "a bridge restart: equal" 0 "^compared +3439 states, largest difference 0 " "$firtp" replay "$work/bridge_restart.lcmlog"
 # Restarted without a FIRTP_CONFIG of its own: the axis states start again at seq 1, named.
 python3 "$dir/edit_log.py" "$work/no_config.lcmlog" "$work/no_config_twice.lcmlog" append "$work/no_config.lcmlog"
 expect "a restart without FIRTP_CONFIG" 1 "the axis states start again at FIRTP_AXIS_STATE seq 1 \\(event [0-9]+\\) without a new FIRTP_CONFIG" \

@@ -84,7 +84,8 @@ InProcessComponent::InProcessComponent(lcm::LCM& lcm, const MachineConfig& machi
     : InProcessComponent(lcm, module_machine(machine), module, settings) {}
 
 InProcessComponent::InProcessComponent(lcm::LCM& lcm, const ModuleMachine& machine, const std::filesystem::path& module,
-                       const InProcessSettings& settings) {
+                       const InProcessSettings& settings)
+    : lcm_(&lcm) {
     const long period_ns = std::lround(machine.period * 1e9);
     check(shim::load_module("threads", {"name1=servo-thread", cat("period1=", std::to_string(period_ns))}),
           "creating the servo thread");
@@ -94,21 +95,31 @@ InProcessComponent::InProcessComponent(lcm::LCM& lcm, const ModuleMachine& machi
     std::vector<std::string> arguments = machine.arguments;
     for (std::string& word : settings_arguments(settings)) arguments.push_back(std::move(word));
     check(shim::load_module(module.string(), arguments), cat("loadrt ", module.string()));
-    BridgeOptions options;
-    options.axes = machine.axes;
-    options.period = machine.period;
-    bridge_ = std::make_unique<Bridge>(lcm, options);
-    for (const char* const* pair = Bridge::pin_pairs(); pair[0]; pair += 2) {
-        const std::string bridge_pin = pair[0], component_pin = pair[1];
-        check(shim::net(cat(bridge_pin.substr(bridge_pin.find('.') + 1), "-net"), {bridge_pin, component_pin}),
-              cat("net ", bridge_pin, " ", component_pin));
-    }
+    bridge_options_.axes = machine.axes;
+    bridge_options_.period = machine.period;
+    bridge_ = std::make_unique<Bridge>(lcm, bridge_options_);
+    net_bridge();
     // Nobody changes tools and no operator resumes here: the handshakes are looped back (a tool
     // change and a pause take a servo period).
     check(shim::net("tool-change-loop", {"firtp.tool-change", "firtp.tool-changed"}), "net firtp.tool-change firtp.tool-changed");
     check(shim::net("pause-loop", {"firtp.paused", "firtp.resume"}), "net firtp.paused firtp.resume");
     check(shim::set_value("firtp.enable", "1"), "setp firtp.enable 1");
     check(shim::add_funct("firtp.update", "servo-thread"), "addf firtp.update servo-thread");
+}
+
+void InProcessComponent::net_bridge() {
+    for (const char* const* pair = Bridge::pin_pairs(); pair[0]; pair += 2) {
+        const std::string bridge_pin = pair[0], component_pin = pair[1];
+        check(shim::net(cat(bridge_pin.substr(bridge_pin.find('.') + 1), "-net"), {bridge_pin, component_pin}),
+              cat("net ", bridge_pin, " ", component_pin));
+    }
+}
+
+void InProcessComponent::restart_bridge(int periods_between) {
+    bridge_.reset();
+    for (int k = 0; k < periods_between; ++k) step();
+    bridge_ = std::make_unique<Bridge>(*lcm_, bridge_options_);
+    net_bridge();
 }
 
 InProcessComponent::~InProcessComponent() {
