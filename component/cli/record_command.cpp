@@ -184,6 +184,9 @@ int record_command(std::span<const std::string> args) {
 
     std::cout << "firtp record: " << writer.events() << " messages in " << options.log.string() << "\n";
     const bool complete = print_totals(std::cout, writer.summary());
+    if (const int restarts = writer.summary().restarts(); restarts > 0)
+        std::cout << "the component started again " << restarts << (restarts == 1 ? " time" : " times")
+                  << " (FIRTP_CONFIG's seq): counted per run, `firtp replay` replays each\n";
     if (complete) {
         std::cout << "nothing lost\n" << std::flush;
     } else {  // which seq numbers, per channel and program (as firtp-lcm-dump --count)

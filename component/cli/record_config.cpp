@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -90,53 +91,66 @@ firtp_lcm::config_t config_message(const std::string& command, std::span<const s
     return m;
 }
 
-ConfigPublisher::ConfigPublisher(lcm::LCM& lcm, firtp_lcm::config_t message, std::chrono::milliseconds every)
-    : lcm_(&lcm), message_(std::move(message)), every_(every) {
-    publish();
+namespace {
+
+// firtp.so's logged loadrt words (config_t "loadrt"): each NAME=VALUE, none of the settings that
+// have their own fields (or the stream keys, which are the bridge's).
+ModuleMachine loaded_machine(const firtp_lcm::config_t& config, const std::vector<std::string>& words) {
+    static const std::set<std::string> not_words{"queue", "max_blocks", "plan_budget_us", "stream_depth", "block_key",
+                                                 "state_key"};
+    ModuleMachine m;
+    m.axes = config.axes;
+    m.period = config.period;
+    for (const std::string& word : words) {
+        const std::size_t equals = word.find('=');
+        if (equals == 0 || equals == std::string::npos || not_words.count(word.substr(0, equals)))
+            throw std::runtime_error(cat("FIRTP_CONFIG from ", config.sender, ": '", word,
+                                         "' is not one of firtp.so's machine settings NAME=VALUE"));
+    }
+    if (m.axes < 1 || m.axes > max_axes || !(m.period > 0.0))
+        throw std::runtime_error(cat("FIRTP_CONFIG from ", config.sender, ": axes ", std::to_string(config.axes),
+                                     ", period ", std::to_string(config.period), " s: not a firtp.so machine"));
+    m.arguments = words;
+    return m;
 }
 
-void ConfigPublisher::poll() {
-    if (std::chrono::steady_clock::now() - last_ >= every_) publish();
-}
-
-void ConfigPublisher::publish() {
-    ++message_.seq;
-    message_.utime = messages::now_utime();
-    messages::publish(*lcm_, messages::config_channel, message_);
-    last_ = std::chrono::steady_clock::now();
-}
+}  // namespace
 
 LoggedComponent component_from(const firtp_lcm::config_t& config) {
     const std::vector<std::string> args = split_words(config.args);
-    ComponentOptions options;
-    if (config.command == "serve") options = parse_serve_options(args);
-    else if (config.command == "run") options = parse_run_options(args);
-    else throw std::runtime_error(cat("FIRTP_CONFIG from an unknown command '", config.command, "'"));
-
     LoggedComponent c;
-    std::optional<LoggedIni> ini;
-    if (!config.ini_file.empty()) {
-        ini.emplace(config.ini_file, config.ini_text);
-        options.plan.ini = ini->path();
+    if (config.command == "loadrt") {
+        c.machine = loaded_machine(config, args);
     } else {
-        options.plan.ini.reset();
-    }
-    try {
-        c.machine = load_machine_config(options.plan);
-    } catch (const std::exception& e) {
-        throw std::runtime_error(cat("the logged machine (", config.ini_file.empty() ? "built-in" : config.ini_file,
-                                     ") does not load: ", e.what()));
+        ComponentOptions options;
+        if (config.command == "serve") options = parse_serve_options(args);
+        else if (config.command == "run") options = parse_run_options(args);
+        else throw std::runtime_error(cat("FIRTP_CONFIG from an unknown command '", config.command, "'"));
+        std::optional<LoggedIni> ini;
+        if (!config.ini_file.empty()) {
+            ini.emplace(config.ini_file, config.ini_text);
+            options.plan.ini = ini->path();
+        } else {
+            options.plan.ini.reset();
+        }
+        try {
+            c.machine = module_machine(load_machine_config(options.plan));
+        } catch (const std::exception& e) {
+            throw std::runtime_error(cat("the logged machine (", config.ini_file.empty() ? "built-in" : config.ini_file,
+                                         ") does not load: ", e.what()));
+        }
     }
     c.settings.queue = config.queue;
     c.settings.max_blocks = config.max_blocks;
     c.settings.stream_depth = config.stream_depth;
     c.settings.plan_budget_us = config.plan_budget_us;
-    c.description = cat(config.sender, ": ", config.command, ", ",
-                        config.ini_file.empty() ? std::string("built-in machine") : config.ini_file);
-    if (!args.empty()) {
-        c.description += ", args";
-        for (const std::string& word : args) c.description.append(" ").append(word);
-    }
+    const bool loaded = config.command == "loadrt";
+    c.description = loaded ? cat(config.sender, ": firtp.so in LinuxCNC (",
+                                 config.ini_file.empty() ? std::string("INI not logged") : config.ini_file, "), loadrt firtp")
+                           : cat(config.sender, ": ", config.command, ", ",
+                                 config.ini_file.empty() ? std::string("built-in machine") : config.ini_file,
+                                 args.empty() ? "" : ", args");
+    for (const std::string& word : args) c.description.append(" ").append(word);
     return c;
 }
 

@@ -5,10 +5,10 @@
 #include "component_options.hpp"
 
 #include <firtp/machine.hpp>
+#include <firtp/config_publisher.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/in_process_component.hpp>
 
-#include <chrono>
 #include <span>
 #include <string>
 
@@ -22,25 +22,13 @@ firtp_lcm::config_t config_message(const std::string& command, std::span<const s
                                    const ComponentOptions& options, const MachineConfig& machine,
                                    const InProcessSettings& settings);
 
-// Publishes the message now and then every `every`, each time with the next seq.
-class ConfigPublisher {
-public:
-    ConfigPublisher(lcm::LCM& lcm, firtp_lcm::config_t message,
-                    std::chrono::milliseconds every = std::chrono::milliseconds(1000));
-    void poll();  // publishes when due
+using messages::ConfigPublisher;  // publishes it now and every second
 
-private:
-    void publish();
-    lcm::LCM* lcm_;
-    firtp_lcm::config_t message_;
-    std::chrono::milliseconds every_;
-    std::chrono::steady_clock::time_point last_;
-};
-
-// The component a config describes, rebuilt as its sender built it: the sender's command line
-// parsed again, its INI read from the logged text (errors name the logged file name).
+// The component a config describes, rebuilt as its sender built it: for "serve" and "run" the
+// sender's command line parsed again, its INI read from the logged text (errors name the logged
+// file name); for "loadrt" (firtp.so in LinuxCNC, firtp-lcm-bridge) firtp.so's logged loadrt words.
 struct LoggedComponent {
-    MachineConfig machine;
+    ModuleMachine machine;
     InProcessSettings settings;
     std::string description;  // "firtp serve --ini diamond.ini (firtp 0.1.0)"
 };

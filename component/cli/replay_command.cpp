@@ -21,6 +21,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 namespace firtp::cli {
 namespace {
@@ -32,6 +33,7 @@ struct ReplayOptions {
     double tolerance = 0.0;                       // relative (replay_compare.hpp); 0: bit for bit
     std::optional<std::filesystem::path> ini;     // another machine than the logged one
     std::optional<std::filesystem::path> module;  // firtp.so
+    std::optional<int> run;                       // only this run of the log (1-based)
     bool help = false;
 };
 
@@ -44,7 +46,9 @@ po::options_description replay_flags() {
         "ini", po::value<std::string>()->value_name("FILE"),
         "run this machine instead of the logged one (for logs without FIRTP_CONFIG, or to see what an INI change does)")(
         "module", po::value<std::string>()->value_name("firtp.so"),
-        "the HAL component to load (default: ../lib/firtp.so next to this program, or $FIRTP_MODULE)");
+        "the HAL component to load (default: ../lib/firtp.so next to this program, or $FIRTP_MODULE)")(
+        "run", po::value<int>()->value_name("N"),
+        "replay only the log's Nth run of the component (a run starts where FIRTP_CONFIG's seq starts again)");
     return d;
 }
 
@@ -58,6 +62,7 @@ ReplayOptions parse_replay_options(std::span<const std::string> args) {
         throw UsageError("--tolerance: must be 0 or a positive number");
     if (vm.count("ini")) o.ini = vm["ini"].as<std::string>();
     if (vm.count("module")) o.module = vm["module"].as<std::string>();
+    if (vm.count("run") && (o.run = vm["run"].as<int>()) < 1) throw UsageError("--run: must be 1 or more");
     return o;
 }
 
@@ -71,7 +76,7 @@ std::string replay_help() {
             "states with the logged ones, one to one, printing where they first differ.\n\n"
          << replay_flags()
          << "\nExit status: 0 equal; 1 bad input (unreadable or incomplete log, no machine); 2 bad command line;\n"
-            "4 the replayed axis states differ from the recorded ones.\n";
+            "4 the replayed axis states differ from the recorded ones (in any run).\n";
     return text.str();
 }
 
@@ -129,17 +134,14 @@ void print_difference(std::ostream& out, const StateDifference& d, const LoggedR
 
 }  // namespace
 
-int replay_command(std::span<const std::string> args) {
-    const ReplayOptions options = parse_replay_options(args);
-    if (options.help) {
-        std::cout << replay_help();
-        return 0;
-    }
-    const LoggedRun run = read_logged_run(options.log);
+namespace {
+
+// Replays one run; true when equal.
+bool replay_run(const LoggedRun& run, const ReplayOptions& options) {
     LoggedComponent component;
     if (options.ini) {
         const std::vector<std::string> serve_args{"--ini", options.ini->string()};
-        component.machine = load_machine_config(parse_serve_options(serve_args).plan);
+        component.machine = module_machine(load_machine_config(parse_serve_options(serve_args).plan));
         if (run.config) component.settings = component_from(*run.config).settings;
         component.description = cat("--ini ", options.ini->string(), " (given)");
     } else if (run.config) {
@@ -171,19 +173,21 @@ int replay_command(std::span<const std::string> args) {
         for (const LoggedEvent* e : inputs) lcm->publish(e->channel, e->data.data(), static_cast<unsigned>(e->data.size()));
     };
     Progress progress(run.states.size());
-    const std::int64_t first_tick = run.states.front().tick;
+    // From the component's first period, as recorded: a log that starts later (the recorder
+    // started a little after the component, nothing taken yet) skips the states before it.
     std::int64_t periods = 0;
     for (std::size_t i = 0; i < run.states.size(); ++i) {
         publish(schedule.before[i]);
-        for (const std::int64_t wanted = run.states[i].tick - first_tick + 1; periods < wanted; ++periods) period();
+        for (const std::int64_t wanted = run.states[i].tick + 1; periods < wanted; ++periods) period();
         progress.update(i);
     }
     progress.done();
     if (collector.problem) throw std::runtime_error(*collector.problem);
+    const std::int64_t first_tick = run.states.front().tick;
+    std::erase_if(collector.states, [&](const firtp_lcm::axis_state_t& s) { return s.tick < first_tick; });
 
-    const Comparison c = compare_states(run.states, collector.states, component.machine.limits.axes, options.tolerance);
-    std::cout << "replay " << options.log.string() << "\n"
-              << "machine      " << component.description << "\n"
+    const Comparison c = compare_states(run.states, collector.states, component.machine.axes, options.tolerance);
+    std::cout << "machine      " << component.description << "\n"
               << "log          " << run.blocks << " blocks, " << run.program_events << " program events, " << run.controls << " controls, " << run.states.size()
               << " axis states\n"
               << "fed          " << schedule.placed_by_state << " blocks and " << schedule.controls_placed_by_state
@@ -195,12 +199,39 @@ int replay_command(std::span<const std::string> args) {
               << "\n";
     if (!c.first) {
         std::cout << "result       equal" << std::endl;
-        return 0;
+        return true;
     }
     std::cout << "result       DIFFERENT\n";
     print_difference(std::cout, *c.first, run, collector.states);
     std::cout.flush();
-    return exit_mismatch;
+    return false;
+}
+
+}  // namespace
+
+int replay_command(std::span<const std::string> args) {
+    const ReplayOptions options = parse_replay_options(args);
+    if (options.help) {
+        std::cout << replay_help();
+        return 0;
+    }
+    const std::vector<LoggedRun> runs = read_logged_runs(options.log, options.run);
+    std::cout << "replay " << options.log.string() << "\n";
+    int different = 0;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        if (runs.size() > 1 || options.run)
+            std::cout << "run          " << (options.run ? *options.run : static_cast<int>(k + 1)) << " (log events "
+                      << runs[k].first_event << "-" << runs[k].last_event << ")\n";
+        for (const std::size_t i : runs[k].bridge_restarts)
+            std::cout << "restart      of the bridge at FIRTP_AXIS_STATE log event " << runs[k].state_events[i] << " (tick "
+                      << runs[k].states[i].tick << "): the component ran on, one run\n";
+        different += replay_run(runs[k], options) ? 0 : 1;
+    }
+    if (runs.size() > 1)
+        std::cout << "all runs     " << (different ? std::to_string(different) + " of " + std::to_string(runs.size()) + " DIFFERENT"
+                                                    : std::to_string(runs.size()) + " equal")
+                  << std::endl;
+    return different ? exit_mismatch : 0;
 }
 
 }  // namespace firtp::cli

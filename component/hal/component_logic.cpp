@@ -147,6 +147,11 @@ void ComponentLogic::update(const ComponentInputs& in, BlockSource source, Compo
         braking_now_ = false;
         if (refuse_inputs(in, source) > 0) error_ = ComponentError::not_enabled;
         last_.state.position = at;  // follow the axes, so that enabling moves nothing
+        // The planner's clock runs on (idle, its output unused): its times are then the same
+        // whenever the machine is switched on, and so the trajectory, to the last bit (a replay
+        // cannot know that period; docs/RECORDING.md).
+        AxisState unused;
+        planner_.tick(unused);
         last_.state.velocity.setZero();
         last_.state.acceleration.setZero();
         last_.state.jerk.setZero();

@@ -5,16 +5,19 @@
 //                  LinuxCNC's HAL: FIRTP_BLOCK and FIRTP_CONTROL from a host into firtp.so's block
 //                  stream and control pins, with the same crc, validation, sequence and flow
 //                  control; firtp.so's axis-state stream and status pins out as FIRTP_AXIS_STATE(_LIVE)
-//                  and FIRTP_STATUS.
+//                  and FIRTP_STATUS; and firtp.so's settings (its HAL params) as FIRTP_CONFIG
+//                  every second, so that a recording replays (`firtp replay LOG`).
 //   --mode motion  LinuxCNC's own motion (e.g. [TRAJ]TPMOD = firtp_tp): a `sampler` channel of the
 //                  axes' pos-cmd and motion.program-line, drained and published (motion_publisher.hpp).
 //
 // Both only drain hal_streams written in the servo thread, so the userspace side may lag without
 // losing a period; what does not fit a stream is counted and reported. Exits cleanly (hal_exit)
 // on SIGTERM, as halcmd's unload sends it, and on SIGINT.
+#include "loaded_config.hpp"
 #include "motion_publisher.hpp"
 
 #include <firtp/bridge.hpp>
+#include <firtp/config_publisher.hpp>
 #include <firtp/defaults.hpp>
 #include <firtp/messages.hpp>
 #include <firtp/version.hpp>
@@ -105,6 +108,7 @@ int main(int argc, char** argv) {
         const double period = static_cast<double>(o.period_ns) * 1e-9;
         std::unique_ptr<firtp::Bridge> bridge;
         std::unique_ptr<firtp::MotionPublisher> motion;
+        std::unique_ptr<firtp::messages::ConfigPublisher> config;
         if (o.mode == "firtp") {
             firtp::BridgeOptions b;
             b.name = o.name.c_str();
@@ -113,7 +117,8 @@ int main(int argc, char** argv) {
             b.live_decimation = o.live_decimation;
             b.status_every = o.status_every;
             b.max_feed_scale = o.max_feed_scale;
-            bridge = std::make_unique<firtp::Bridge>(*lcm, b);
+            bridge = std::make_unique<firtp::Bridge>(*lcm, b);  // hal_init: firtp.so's params readable
+            config = std::make_unique<firtp::messages::ConfigPublisher>(*lcm, firtp::loaded_firtp_config());
         } else {
             firtp::MotionOptions m;
             m.name = o.name;
@@ -130,6 +135,7 @@ int main(int argc, char** argv) {
             lcm->handleTimeout(1);  // blocks and controls (mode firtp), at most 1 ms
             if (bridge) bridge->poll();
             if (motion) motion->poll();
+            if (config) config->poll();
         }
         if (motion) motion->poll();  // what the servo thread wrote before the stop
         if (bridge) bridge->poll();

@@ -1,5 +1,7 @@
 #include "event_text.hpp"
 
+#include <type_traits>
+
 #include <firtp/messages.hpp>
 
 #include <charconv>
@@ -83,6 +85,7 @@ std::string text(const firtp_lcm::config_t& m) {
 }
 
 std::int64_t program_of(const firtp_lcm::block_t& m) { return m.program; }
+std::int64_t program_of(const firtp_lcm::control_t& m) { return m.session; }  // each host counts its own
 template <class Message> std::int64_t program_of(const Message&) { return 0; }
 
 // Decodes as Message when the fingerprint matches (decode checks it first); a message whose crc
@@ -96,7 +99,8 @@ template <class Message> std::optional<EventText> try_decode(const void* data, i
         const std::string why = problem.rfind("corrupted: ", 0) == 0 ? problem.substr(11) : problem;
         return EventText{text(message) + " CORRUPTED: " + why, std::nullopt, true};
     }
-    return EventText{text(message), SeqKey{program_of(message), message.seq}};
+    return EventText{text(message), SeqKey{program_of(message), message.seq, std::is_same_v<Message, firtp_lcm::config_t>,
+                                           std::is_same_v<Message, firtp_lcm::control_t>}};
 }
 
 }  // namespace

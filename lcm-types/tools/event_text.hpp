@@ -10,8 +10,10 @@ namespace firtp::dump {
 
 // What a sequence counter belongs to: the channel, and for blocks the program.
 struct SeqKey {
-    std::int64_t program = 0;  // 0 for the types without a program
+    std::int64_t program = 0;  // 0 for the types without a program; a control's session
     std::int64_t seq = 0;
+    bool config = false;       // config_t: its seq not above the last one's means the component started again
+    bool session = false;      // program is a control session
 };
 
 struct EventText {

@@ -52,7 +52,13 @@ void SeqSummary::add(const std::string& channel, const EventText& event) {
         ++c.unknown;
         return;
     }
-    Stream& s = c.programs[key->program];
+    if (key->config) {
+        if (config_seen_ && key->seq <= config_seq_) ++run_;  // its publisher started again
+        config_seen_ = true;
+        config_seq_ = key->seq;
+    }
+    c.sessions = key->session;
+    Stream& s = c.programs[{key->program == 0 ? run_ : 0, key->program}];
     const bool first = s.events++ == 0;
     if (!insert(s.runs, key->seq))
         ++s.repeated;
@@ -88,9 +94,11 @@ void SeqSummary::print(std::ostream& out) const {
     for (const auto& [name, c] : channels_) {
         if (c.unknown > 0) out << name << " events=" << c.unknown << " unknown type\n";
         if (c.corrupted > 0) out << name << " events=" << c.corrupted << " corrupted (CRC mismatch)\n";
-        for (const auto& [program, s] : c.programs) {
+        for (const auto& [key, s] : c.programs) {
+            const auto& [run_index, program] = key;
             out << name;
-            if (program != 0) out << " program=" << program;
+            if (program != 0) out << (c.sessions ? " session=" : " program=") << program;
+            if (run_ > 0 && program == 0) out << " run=" << run_index + 1;
             const std::int64_t first = s.runs.begin()->first;
             const std::int64_t missing = s.missing();
             std::string gaps;

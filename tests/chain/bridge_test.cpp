@@ -419,3 +419,62 @@ TEST(Bridge, CorruptedLastBlockIsNamedAndResentAtOnce) {
     std::printf("corrupted last block through the host: refused at period %lld, its resend accepted at %lld\n",
                 static_cast<long long>(refused), static_cast<long long>(accepted));
 }
+
+// firtp-lcm-bridge unloaded and loaded again while firtp.so runs a program (a LinuxCNC user's
+// halcmd unload, then lcm.hal again): the new bridge takes the program over once every block the
+// old one wrote is taken (until then it says nothing, and refuses the host's next block for a
+// resend), and the control generation in effect (named 0, 0, without an error). The program
+// finishes, every block once; the states go on tick by tick, their seq from 1. Restarted within a
+// period (nothing waiting in the state stream: the program in the first period tells) or after 5.
+class BridgeRestart : public testing::TestWithParam<int> {};
+
+TEST_P(BridgeRestart, TheNewBridgeTakesTheProgramAndTheControlOver) {
+    test::Chain chain(test::message_machine());
+    chain.control(0.8, false, false);  // session 1 seq 1: the first bridge's generation 2
+    const int written = 2 * defaults::max_blocks + 8;
+    for (int seq = 1; seq <= written; ++seq) chain.publish(block_message(seq % 2, 0.01 * seq, 5, seq, seq));
+    chain.run(1);
+    ASSERT_LT(chain.states.back().next_seq, written);  // blocks left in the stream
+    EXPECT_EQ(chain.states.back().control_seq, 1);
+    const std::size_t states_before = chain.states.size(), statuses_before = chain.statuses.size();
+
+    chain.chain->restart_bridge(GetParam());  // firtp.so alone for 0 or 5 periods
+    chain.publish(block_message(0, 0.01 * (written + 1), 5, written + 1, written + 1));  // the host's next
+    chain.run(1);
+    EXPECT_EQ(chain.statuses.size(), statuses_before);  // taking over: nothing said yet
+    chain.run(10);
+    ASSERT_GT(chain.statuses.size(), statuses_before);
+    EXPECT_EQ(chain.status().program, 5);
+    EXPECT_EQ(chain.status().next_seq, written + 1);  // every block the old bridge wrote, taken
+    bool refused_for_resend = false;
+    for (std::size_t i = statuses_before; i < chain.statuses.size(); ++i) {
+        const firtp_lcm::status_t& s = chain.statuses[i];
+        EXPECT_NE(s.error_code, firtp_lcm::status_t::ERROR_LOST_STATE) << s.error_text;
+        // Periods waiting: refused for a resend; none (restarted within a period): as a gap, not
+        // knowing the program yet. Either way the host resends it.
+        const std::int32_t refusal = GetParam() > 0 ? std::int32_t{firtp_lcm::status_t::ERROR_QUEUE_FULL}
+                                                    : std::int32_t{firtp_lcm::status_t::ERROR_SEQUENCE_GAP};
+        refused_for_resend = refused_for_resend ||
+                             (s.error_code == refusal && s.error_text.find("seq " + std::to_string(written + 1)) != std::string::npos);
+    }
+    EXPECT_TRUE(refused_for_resend);
+    ASSERT_GT(chain.states.size(), states_before);
+    EXPECT_EQ(chain.states[states_before].seq, 1);
+    EXPECT_EQ(chain.states[states_before].tick, chain.states[states_before - 1].tick + 1);
+    EXPECT_EQ(chain.states[states_before].control_seq, 0);  // the old bridge's control: not this one's
+
+    chain.publish(block_message(0, 0.01 * (written + 1), 5, written + 1, written + 1));  // resent
+    chain.control(1.0, false, false);  // seq 2, the new bridge's first generation
+    for (int k = 0; k < 100 && !(chain.status().next_seq == written + 2 &&
+                                 chain.status().state == firtp_lcm::status_t::IDLE); ++k)
+        chain.run(500);
+    EXPECT_EQ(chain.status().state, firtp_lcm::status_t::IDLE);
+    EXPECT_EQ(chain.status().next_seq, written + 2);
+    EXPECT_EQ(chain.states.back().control_session, 1);
+    EXPECT_EQ(chain.states.back().control_seq, 2);
+    EXPECT_EQ(chain.position()[1], 0.01 * (written + 1));
+    for (std::size_t i = states_before + 1; i < chain.states.size(); ++i)
+        ASSERT_EQ(chain.states[i].tick, chain.states[i - 1].tick + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bridge, BridgeRestart, testing::Values(0, 5));

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <deque>
 
@@ -357,4 +358,74 @@ TEST(ComponentLogic, FeedbackSlowerThanTheBrakeSpeedStartsAtRest) {
     for (const AxisState& s : run.samples) ASSERT_EQ(s.position, p);
     EXPECT_EQ(run.out.mode, ComponentState::idle);
     EXPECT_EQ(run.out.error, ComponentError::none);
+}
+
+namespace {
+
+// examples/linuxcnc/configs/firtp_hal's machine: every move smoothed at the axes' limits.
+ComponentSettings linuxcnc_sample_settings() {
+    ComponentSettings s;
+    s.planner.fixed_chain = false;
+    s.planner.period = 0.001;
+    s.planner.max_rate = 1.2;
+    s.planner.limits.axes = 3;
+    for (int a = 0; a < 3; ++a) s.planner.limits.axis[a] = {300.0, 5000.0, 100000.0};
+    s.default_tolerance = 0.05;
+    return s;
+}
+
+// The start of examples/arcs.ngc as `firtp host` sends it: up, down, along X, a quarter circle in
+// 0.28 mm chords (G3 X30 Y10 I0 J10 at F2400).
+std::vector<Block> arcs_start() {
+    std::vector<Block> blocks;
+    auto add = [&](AxisVector target, double feed, MotionType type, std::int64_t line) {
+        Block b;
+        b.target = target;
+        b.feed = feed;
+        b.type = type;
+        b.tolerance = 0.02;
+        b.line = line;
+        blocks.push_back(b);
+    };
+    add(xyz(0, 0, 1), 300, MotionType::traverse, 4);
+    add(xyz(0, 0, 0), 5, MotionType::feed, 5);
+    add(xyz(20, 0, 0), 40, MotionType::feed, 7);
+    const double pi = 3.14159265358979323846;
+    for (int i = 1; i <= 56; ++i) {
+        const double angle = -0.5 * pi + 0.5 * pi * i / 56;
+        add(xyz(20 + 10 * std::cos(angle), 10 + 10 * std::sin(angle), 0), 40, MotionType::feed, 8);
+    }
+    return blocks;
+}
+
+}  // namespace
+
+// LinuxCNC enables firtp.so at "machine on", some hundred periods after its start; `firtp replay`
+// enables it at once (the log does not say when). With the blocks taken in the same period, the
+// trajectory is the same to the last bit, whenever enable rose: the planner's clock runs on while
+// disabled (before, its times counted only enabled periods and the rounding moved with them).
+TEST(ComponentLogic, TheTrajectoryDoesNotDependOnWhenTheMachineWasSwitchedOn) {
+    const int blocks_at = 850, periods = 6000;
+    const std::vector<Block> blocks = arcs_start();
+    auto run = [&](int enable_at) {
+        Servo s(linuxcnc_sample_settings());
+        s.in.enable = false;
+        s.ticks(enable_at);
+        s.in.enable = true;
+        s.ticks(blocks_at - enable_at);
+        for (std::uint32_t i = 0; i < blocks.size(); ++i) s.stream.records.push_back(record(blocks[i], 3, i + 1));
+        s.ticks(periods);
+        EXPECT_EQ(s.out.mode, ComponentState::idle) << "enabled at " << enable_at;
+        return std::vector<AxisState>(s.samples.begin() + blocks_at, s.samples.end());
+    };
+    const std::vector<AxisState> at_once = run(0);
+    ASSERT_EQ(at_once.back().position, blocks.back().target);
+    for (int enable_at : {1, 5, 137, 300, 333, 700}) {
+        const std::vector<AxisState> later = run(enable_at);
+        for (std::size_t k = 0; k < at_once.size(); ++k) {
+            ASSERT_EQ(later[k].position, at_once[k].position) << "enabled at " << enable_at << ", period " << blocks_at + k;
+            ASSERT_EQ(later[k].velocity, at_once[k].velocity) << "enabled at " << enable_at << ", period " << blocks_at + k;
+            ASSERT_EQ(later[k].acceleration, at_once[k].acceleration) << "enabled at " << enable_at << ", period " << blocks_at + k;
+        }
+    }
 }

@@ -4,8 +4,8 @@
 //                                                      log (lcm::LogFile), until SIGINT/SIGTERM
 //   firtp-bridge-states samples LOG.lcmlog OUT.txt [--axes 3]
 //       checks the log's FIRTP_AXIS_STATE and FIRTP_STATUS: every message intact (crc), the states'
-//       seq 1, 2, ... and ticks consecutive, no status reporting lost states; writes the states as
-//       examples/linuxcnc/record.hal's samples (X Y Z scaled by 2^40, line, 0, 0, at rest), an
+//       seq 1, 2, ... (from 1 again where the bridge was restarted) and ticks consecutive, no status
+//       reporting lost states; writes the states as examples/linuxcnc/record.hal's samples (X Y Z scaled by 2^40, line, 0, 0, at rest), an
 //       "overrun" line for every missing period, so that firtp-tp-check measures them; counts the
 //       operator controls the states name as applied. Exit 1 on any problem, naming it.
 #include <firtp/messages.hpp>
@@ -70,6 +70,7 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
         return 1;
     }
     long states = 0, statuses = 0, corrupted = 0, seq_gaps = 0, tick_gaps = 0, lost_reported = 0, missing = 0;
+    long restarts = 0;  // of the bridge under a running component: seq 1 again, ticks on
     long controls = 0;  // control changes the states name (axis_state_t control_session, control_seq)
     std::int64_t control_session = 0, control_seq = 0;
     std::string last_lost_text;
@@ -101,7 +102,9 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
             continue;
         }
         const firtp_lcm::axis_state_t& m = r.message;
-        if (m.seq != last_seq + 1) {
+        if (m.seq == 1 && last_seq > 1 && last_tick >= 0 && m.tick == last_tick + 1) {
+            ++restarts;  // firtp-lcm-bridge started again, firtp.so ran on: its count starts again
+        } else if (m.seq != last_seq + 1) {
             ++seq_gaps;
             problem("axis state seq " + std::to_string(m.seq) + " after " + std::to_string(last_seq));
         }
@@ -132,6 +135,7 @@ int samples(const std::string& log_path, const std::string& out_path, int axes) 
     if (statuses == 0) problem("no FIRTP_STATUS in the log");
     std::printf("controls     %ld named by the states as applied (the last: session %lld seq %lld)\n", controls,
                 static_cast<long long>(control_session), static_cast<long long>(control_seq));
+    if (restarts > 0) std::printf("restarts     %ld of the bridge (seq from 1 again, ticks consecutive)\n", restarts);
     std::printf("states       %ld (seq 1..%lld, ticks %lld..%lld), last line %d\n", states,
                 static_cast<long long>(last_seq), static_cast<long long>(first_tick), static_cast<long long>(last_tick),
                 last_line);

@@ -4,7 +4,7 @@ headless, and check what firtp-lcm-bridge published over LCM.
 
     run_config.py CONFIG_DIR --program NGC --bridge firtp-lcm-bridge --module SO --states TOOL
         --check-tool firtp-tp-check [--host firtp] [--dump firtp-lcm-dump] [--plan firtp]
-        [--within MM] [-- CHECK OPTIONS]
+        [--within MM] [--replay firtp] [--restart-bridge-at S] [-- CHECK OPTIONS]
 
 CONFIG_DIR's INI is copied into a scratch directory with [DISPLAY]DISPLAY = firtp-headless (no
 screen: E-stop reset, machine on, home, run OPEN_FILE, exit) and the bridge in its bin/. With
@@ -19,7 +19,15 @@ as `nobody` (rtapi_app refuses root); `halrun -U` cleans up even on failure. The
 ticks consecutive, no status reporting lost states, and turns them into samples that
 `firtp-tp-check` measures against NGC (end point exact, CHECK OPTIONS: tolerance, limits, lines;
 with --plan every moving period equal to `firtp plan NGC --ini INI` within --within mm).
-lcm-logger's log is counted by firtp-lcm-dump and reported. Exit 0 passed, 1 failed, 77 skipped.
+lcm-logger's log is counted by firtp-lcm-dump and reported. With --replay, `firtp record` records
+beside them (it must lose nothing) and `firtp replay` runs on its log with nothing else: the log
+carries the machine as firtp-lcm-bridge published it (FIRTP_CONFIG, firtp.so's settings in effect),
+and the replay must be equal bit for bit, every block placed by the axis states; with
+--replay-refused TEXT it must instead exit 1 saying TEXT (a log it cannot replay, e.g. LinuxCNC's
+own motion with no FIRTP_BLOCK in it). --restart-bridge-at S: S seconds into the host's run,
+firtp-lcm-bridge is unloaded and lcm.hal loaded again while firtp.so runs on; the host must still
+finish, the states show one restart with consecutive ticks, and the replay takes both bridges' logs
+as one run of firtp.so. Exit 0 passed, 1 failed, 77 skipped.
 """
 import argparse
 import os
@@ -73,6 +81,8 @@ ip link set lo up && ip route add 224.0.0.0/4 dev lo || { echo "no multicast rou
 recorder=$!
 logger=
 if command -v lcm-logger > /dev/null; then lcm-logger --quiet -f "$WORK/lcm-logger.lcmlog" > "$WORK/lcm-logger.out" 2>&1 & logger=$!; fi
+record=
+if [ -n "$FIRTP_RECORD" ]; then "$FIRTP_RECORD" record "$WORK/record.lcmlog" > "$WORK/record.out" 2>&1 & record=$!; fi
 sleep 0.5
 [ -n "$OPERATOR" ] && { (timeout 60 sh -c "$OPERATOR") > "$FIRTP_HOST_INPUT" & }
 (cd "$CONFIG" && $AS_USER env HOME="$CONFIG" PATH="$PATH" FIRTP_HOST_PROGRAM="$FIRTP_HOST_PROGRAM" \
@@ -81,8 +91,40 @@ status=$?
 sleep 0.3
 kill -INT $recorder; wait $recorder
 [ -n "$logger" ] && { kill -INT $logger; wait $logger; }
+[ -n "$record" ] && { kill -INT $record; wait $record; echo $? > "$WORK/record.rc"; }
 exit $status
 """
+
+
+def record_and_replay(work, a):
+    """`firtp record`'s log: nothing lost, and `firtp replay LOG` equal (or refused as expected)."""
+    failed = []
+    rc_file = os.path.join(work, "record.rc")
+    rc = int(open(rc_file).read()) if os.path.exists(rc_file) else -1
+    print("firtp record (exit %d):\n%s" % (rc, open(os.path.join(work, "record.out")).read().strip()))
+    if rc != 0:
+        failed.append("firtp record exit %d (0: nothing lost)" % rc)
+    log = os.path.join(work, "record.lcmlog")
+    replay = subprocess.run([a.replay, "replay", log], capture_output=True, text=True)
+    print("firtp replay (exit %d):\n%s%s" % (replay.returncode, replay.stdout, replay.stderr))
+    if a.replay_refused:
+        if replay.returncode != 1 or a.replay_refused not in replay.stderr:
+            failed.append("firtp replay: expected exit 1 saying '%s'" % a.replay_refused)
+        return failed
+    if replay.returncode != 0 or not re.search(r"^result +equal$", replay.stdout, re.M):
+        failed.append("firtp replay: not equal (exit %d)" % replay.returncode)
+    if a.restart_bridge_at is not None and not re.search(r"^restart +of the bridge at .*: the component ran on, one run$",
+                                                          replay.stdout, re.M):
+        failed.append("firtp replay: the bridge's restart not taken as one run of firtp.so")
+    # the machine from the log: firtp.so's settings as firtp-lcm-bridge read them in LinuxCNC
+    if not re.search(r"^machine +firtp-lcm-bridge .*: firtp\.so in LinuxCNC \(.*\.ini\), loadrt firtp axes=",
+                     replay.stdout, re.M):
+        failed.append("firtp replay: the log's machine is not firtp-lcm-bridge's FIRTP_CONFIG")
+    counts = re.search(r"^log +(\d+) blocks, (\d+) program events, (\d+) controls.*\n"
+                       r"fed +(\d+) blocks and (\d+) controls in the periods", replay.stdout, re.M)
+    if not counts or int(counts[4]) != int(counts[1]) + int(counts[2]) or int(counts[5]) != int(counts[3]):
+        failed.append("firtp replay: not every block, event and control placed by the axis states")
+    return failed
 
 
 def main():
@@ -100,11 +142,20 @@ def main():
     parser.add_argument("--operator", default="",
                         help="with --host: shell commands whose output is the host's operator input "
                              "(FIRTP_HOST_INPUT, a named pipe), e.g. 'sleep 0.3; echo hold; sleep 0.5; echo resume'")
+    parser.add_argument("--restart-bridge-at", type=float,
+                        help="with --host: S seconds after the host starts, unload firtp-lcm-bridge and load "
+                             "lcm.hal again (halcmd), while firtp.so runs on")
+    parser.add_argument("--replay", help="firtp: record with `firtp record`, then `firtp replay` the log")
+    parser.add_argument("--replay-refused", help="with --replay: replay must exit 1 saying this")
     parser.add_argument("--keep", help="copy the logs and recordings here")
     argv = sys.argv[1:]
     checks = argv[argv.index("--") + 1:] if "--" in argv else []
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
-    for name in ("program", "bridge", "module", "states", "check_tool", "host", "plan", "dump"):
+    if a.restart_bridge_at is not None:  # as a user would, from a shell beside the running LinuxCNC
+        a.operator = ("sleep %g; (cd \"$CONFIG\" && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd unload "
+                      "firtp-lcm-bridge && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd -i \"$INI\" "
+                      "-f lcm.hal) > \"$WORK/restart.log\" 2>&1; sleep 10; %s" % (a.restart_bridge_at, a.operator))
+    for name in ("program", "bridge", "module", "states", "check_tool", "host", "plan", "dump", "replay"):
         if getattr(a, name) not in (None, "none"):
             setattr(a, name, os.path.abspath(getattr(a, name)))
 
@@ -141,7 +192,7 @@ def main():
             os.chown(host_input, uid, gid)
         env = dict(os.environ, STATES=a.states, WORK=work, CONFIG=config, INI=ini, AS_USER=" ".join(prefix),
                    FIRTP_HOST_PROGRAM=os.path.join(config, "program.ngc"), FIRTP_HOST_INPUT=host_input,
-                   OPERATOR=a.operator)
+                   OPERATOR=a.operator, FIRTP_RECORD=a.replay or "")
         session = subprocess.run(["unshare", "-n", "bash", "-c", SESSION], env=env)
         result = os.path.join(config, "result.json")
         print("linuxcnc -r %s: exit %d, %s" % (os.path.basename(ini), session.returncode,
@@ -166,6 +217,11 @@ def main():
         # axis states name the ones applied, as `firtp replay` needs them.
         if a.operator and re.search(r"^controls +0 named", got.stdout, re.M):
             failed.append("no axis state names an operator control (is firtp.control-gen netted?)")
+        if a.restart_bridge_at is not None:
+            restart_log = os.path.join(work, "restart.log")
+            print("bridge restart:\n" + (open(restart_log).read().strip() if os.path.exists(restart_log) else "(no log)"))
+            if not re.search(r"^restarts +1 of the bridge", got.stdout, re.M):
+                failed.append("the bridge was not restarted once under the running firtp.so")
         check = [a.check_tool, samples, "--ini", ini, "--program", a.program] + checks
         if a.plan:
             plan_csv = os.path.join(work, "plan.csv")
@@ -181,6 +237,8 @@ def main():
         if a.dump and os.path.exists(logger):
             counted = subprocess.run([a.dump, "--count", logger], capture_output=True, text=True)
             print("lcm-logger beside it:\n" + counted.stdout.strip())
+        if a.replay:
+            failed += record_and_replay(work, a)
         if failed:
             log = os.path.join(work, "linuxcnc.log")
             print("---- linuxcnc.log (last lines)")
@@ -192,7 +250,8 @@ def main():
         if placed is not None:
             placed.restore()
         if a.keep:
-            shutil.copytree(work, a.keep, dirs_exist_ok=True)
+            shutil.copytree(work, a.keep, dirs_exist_ok=True,  # not the operator's named pipe
+                            ignore=lambda d, names: [n for n in names if n.endswith(".fifo")])
         shutil.rmtree(work, ignore_errors=True)
     if failed:
         print("FAIL: " + "; ".join(failed))

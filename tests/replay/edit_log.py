@@ -6,6 +6,13 @@
    edit_log.py IN OUT strip CHANNEL        leave out every event on CHANNEL
    edit_log.py IN OUT nudge CHANNEL INDEX  change the lowest bit of position X in the INDEX-th axis state,
                                            crc recomputed (an intact message that says something else)
+   edit_log.py IN OUT append LOG2         IN's events, then LOG2's: two runs of the component in one log
+   edit_log.py IN OUT from CHANNEL INDEX   leave out everything before the INDEX-th event on CHANNEL but
+                                           FIRTP_CONFIG (a recorder started late)
+   edit_log.py IN OUT restart CHANNEL INDEX   the bridge started again before the INDEX-th axis state while the
+                                           component ran on (CHANNEL: FIRTP_AXIS_STATE): from there the states' seq
+                                           from 1 and the control they name 0, 0 until it changes, a FIRTP_CONFIG
+                                           (seq 1, then on) before it
    edit_log.py IN OUT old CHANNEL          every axis state as firtp wrote it before control_session and
                                            control_seq: that type's fingerprint, without those 16 bytes, sealed
 """
@@ -42,7 +49,39 @@ def main():
     src, dst, op, channel = sys.argv[1:5]
     arg = int(sys.argv[5]) if len(sys.argv) > 5 else 0
     out, seen = [], 0
+    if op == "append":
+        out = list(events(src)) + list(events(channel))
+        src, channel = "/dev/null", ""
+    started = op != "from"
+    if op == "restart":
+        out, configs, config, named, renamed = [], 0, None, None, True
+        for utime, ch, payload in events(src):
+            name = ch.decode()
+            if name == "FIRTP_CONFIG":
+                config = payload
+                if seen >= arg:
+                    configs += 1
+                    payload = sealed(payload[:16] + struct.pack(">q", configs) + payload[24:])
+            if name == channel:
+                seen += 1
+                if seen == arg - 1:
+                    named = payload[-20:-4]
+                if seen == arg:
+                    configs = 1
+                    out.append((utime, b"FIRTP_CONFIG", sealed(config[:16] + struct.pack(">q", 1) + config[24:])))
+                if seen >= arg:
+                    renamed = renamed and payload[-20:-4] == named
+                    control = bytes(16) if renamed else payload[-20:-4]
+                    payload = sealed(payload[:16] + struct.pack(">q", seen - arg + 1) + payload[24:-20] + control + payload[-4:])
+            out.append((utime, ch, payload))
+        src = "/dev/null"
     for utime, ch, payload in events(src):
+        if op == "from" and ch.decode() == channel and seen + 1 == arg:
+            started = True
+        if not started and ch.decode() != "FIRTP_CONFIG":
+            if ch.decode() == channel:
+                seen += 1
+            continue
         if ch.decode() != channel:
             out.append((utime, ch, payload))
             continue

@@ -61,6 +61,39 @@ expect "a corrupted block" 1 "event [0-9]+ on FIRTP_BLOCK: corrupted: CRC mismat
 expect "no such log" 1 "no log file" "$firtp" replay "$work/none.lcmlog"
 expect "no log given" 2 "missing LOG.lcmlog" "$firtp" replay
 
+# Several runs of the component in one log (FIRTP_CONFIG's seq starts again: serve run twice, a
+# restarted LinuxCNC): replayed run by run, each with its own machine; --run N replays one.
+python3 "$dir/edit_log.py" "$log" "$work/two_runs.lcmlog" append "$controls"
+expect "two runs: both equal" 0 "^all runs +2 equal" "$firtp" replay "$work/two_runs.lcmlog"
+expect "two runs: the second's events" 0 "^run +2 \\(log events 1421-5410\\)" "$firtp" replay "$work/two_runs.lcmlog"
+expect "--run 2: its controls" 0 "^fed +5 blocks and 21 controls in the periods" "$firtp" replay "$work/two_runs.lcmlog" --run 2
+expect "--run 3: no such run" 1 "holds 2 runs of the component, not a run 3" "$firtp" replay "$work/two_runs.lcmlog" --run 3
+python3 "$dir/edit_log.py" "$log" "$work/two_nudged.lcmlog" append "$work/nudged.lcmlog"
+expect "two runs: the second differs" 4 "^all runs +1 of 2 DIFFERENT" "$firtp" replay "$work/two_nudged.lcmlog"
+# A run that starts with a running component (firtp-lcm-bridge restarted under firtp.so, or the
+# recorder started late): refused, naming the run and its first tick; the run before replays alone.
+python3 "$dir/edit_log.py" "$log" "$work/late.lcmlog" from FIRTP_AXIS_STATE 300
+python3 "$dir/edit_log.py" "$log" "$work/restarted.lcmlog" append "$work/late.lcmlog"
+expect "a run from tick 299: refused" 1 \
+  "run 2 of 2 \\(log events [0-9]+-[0-9]+\\): its first axis state \\(FIRTP_AXIS_STATE seq 300, event [0-9]+\\) is tick 299 of a component that had taken blocks or controls before" \
+  "$firtp" replay "$work/restarted.lcmlog"
+expect "the run before it, alone" 0 "result +equal" "$firtp" replay "$work/restarted.lcmlog" --run 1
+# A recorder started a few periods after the component, before it took anything (as
+# record_controls.sh's often is): replayed from tick 0, those periods unchecked, equal.
+python3 "$dir/edit_log.py" "$controls" "$work/late_fresh.lcmlog" from FIRTP_AXIS_STATE 18
+expect "started 17 periods late, nothing taken yet" 0 "^compared +3422 states, largest difference 0 " \
+  "$firtp" replay "$work/late_fresh.lcmlog"
+# firtp-lcm-bridge started again under a running firtp.so (its FIRTP_CONFIG and the states' seq
+# from 1, the ticks going on, the old bridge's control named 0, 0): one run, equal.
+python3 "$dir/edit_log.py" "$controls" "$work/bridge_restart.lcmlog" restart FIRTP_AXIS_STATE 1500
+expect "a bridge restart: one run" 0 "^restart +of the bridge at FIRTP_AXIS_STATE log event [0-9]+ \\(tick 1499\\): the component ran on, one run$" \
+  "$firtp" replay "$work/bridge_restart.lcmlog"
+expect "a bridge restart: equal" 0 "^compared +3439 states, largest difference 0 " "$firtp" replay "$work/bridge_restart.lcmlog"
+# Restarted without a FIRTP_CONFIG of its own: the axis states start again at seq 1, named.
+python3 "$dir/edit_log.py" "$work/no_config.lcmlog" "$work/no_config_twice.lcmlog" append "$work/no_config.lcmlog"
+expect "a restart without FIRTP_CONFIG" 1 "the axis states start again at FIRTP_AXIS_STATE seq 1 \\(event [0-9]+\\) without a new FIRTP_CONFIG" \
+  "$firtp" replay "$work/no_config_twice.lcmlog" --ini "$examples/diamond.ini"
+
 # The recorder's accounting, fed by LCM's file:// provider (the same receive path as udpm://).
 expect "record: nothing lost" 0 "nothing lost" \
   "$firtp" record "$work/copy.lcmlog" --lcm-url "file://$log?speed=0" --idle 1 --duration 30
@@ -72,6 +105,16 @@ expect "record: repeats named" 4 "FIRTP_STATUS: [0-9]+ messages, missing 0, repe
   "$firtp" record "$work/twice_copy.lcmlog" --lcm-url "file://$work/twice.lcmlog?speed=0" --idle 1 --duration 30
 expect "record: corrupted named" 4 "FIRTP_BLOCK: 4 messages, .*corrupted 1  LOST" \
   "$firtp" record "$work/flipped_copy.lcmlog" --lcm-url "file://$work/flipped.lcmlog?speed=0" --idle 1 --duration 30
+# Two runs of the component (FIRTP_CONFIG's seq starts again): counted per run, nothing lost
+# (before, the second run's seqs counted as repeats); the controls per host session.
+expect "record: two runs, nothing lost" 0 "^the component started again 1 time .*\n?" \
+  "$firtp" record "$work/two_copy.lcmlog" --lcm-url "file://$work/two_runs.lcmlog?speed=0" --idle 1 --duration 30
+expect "record: two runs, states counted per run" 0 "FIRTP_AXIS_STATE: 4665 messages, missing 0, repeated 0, reordered 0, corrupted 0$" \
+  "$firtp" record "$work/two_copy.lcmlog" --lcm-url "file://$work/two_runs.lcmlog?speed=0" --idle 1 --duration 30
+expect "dump --count: the second run" 0 "^FIRTP_AXIS_STATE run=2 events=3439 seq=1-3439 missing=0 repeated=0 reordered=0$" \
+  "$(dirname "$firtp")/firtp-lcm-dump" --count "$work/two_runs.lcmlog"
+expect "dump --count: controls per session" 0 "^FIRTP_CONTROL session=[0-9]+ events=21 seq=1-21 missing=0 repeated=0" \
+  "$(dirname "$firtp")/firtp-lcm-dump" --count "$work/two_runs.lcmlog"
 expect "record --ini: the machine first" 0 "^0 .*FIRTP_CONFIG config_t seq=1 command=serve ini=.*diamond.ini" \
   bash -c '"$0" record "$1/ini.lcmlog" --ini "$2/diamond.ini" --lcm-url "file://$1/no_config.lcmlog?speed=0" --idle 1 --duration 30 >/dev/null && "$(dirname "$0")/firtp-lcm-dump" "$1/ini.lcmlog" | head -1 | sed "s/^[0-9]* /0 /"' \
   "$firtp" "$work" "$examples"

@@ -96,6 +96,9 @@ Bridge::Bridge(lcm::LCM& lcm, const BridgeOptions& options) : lcm_(&lcm), option
         throw std::runtime_error(std::string(name) + ": cannot create pins or attach to the component's streams "
                                  "(is firtp loaded with the same block_key/state_key?)");
     }
+    // Periods already waiting: the component ran before this bridge (one before it was unloaded).
+    taking_over_ = streams_->has_states && hal_stream_depth(&streams_->states) > 0;
+    sequence_taken_over_ = !taking_over_;
     hal_ready(comp_id_);
     block_subscription_ = lcm.subscribe(messages::block_channel, &Bridge::on_block_bytes, this);
     control_subscription_ = lcm.subscribe(messages::control_channel, &Bridge::on_control_bytes, this);
@@ -197,6 +200,13 @@ void Bridge::on_event(const firtp_lcm::event_t* m) {
 
 bool Bridge::admit(std::int64_t program, std::int64_t seq, const std::string& name) {
     using Verdict = messages::SequenceChecker::Verdict;
+    if (taking_over_ && !sequence_taken_over_ && sequence_.program() == 0 &&
+        (!period_seen_ || (reported_program_ != 0 && program == reported_program_))) {
+        ++rejected_;
+        report(firtp_lcm::status_t::ERROR_QUEUE_FULL,
+               name + ": taking the program over from the bridge before this one, resend");
+        return false;
+    }
     const Verdict verdict = sequence_.check(program, seq, component_idle());
     if (verdict != Verdict::accept) {
         ++rejected_;
@@ -236,6 +246,7 @@ void Bridge::write(const stream::BlockRecord& admitted, std::int64_t program, st
     hal_pin::set(pins_->abort, false);
     hal_stream_write(&streams_->blocks, buffer);
     sequence_.accepted(program, seq);
+    sequence_taken_over_ = true;  // its own sequence from here: nothing (more) to take over
     ++forwarded_;
 }
 
@@ -267,6 +278,7 @@ void Bridge::on_control(const firtp_lcm::control_t* m) {
     }
     hold_ = m->hold;
     abort_ = m->abort;
+    inherit_control_gen(hal_pin::get(pins_->control_gen));  // as netted: the signal's value
     // The three levels and the generation that names them, as one (control_pins.hpp); the axis state
     // of every period that applied this generation names this control (forward_states).
     control_gen_ = control_pins::write({pins_->control_gen, pins_->feed_scale, pins_->hold, pins_->abort}, control_gen_,
@@ -278,6 +290,26 @@ void Bridge::on_control(const firtp_lcm::control_t* m) {
     status_due_ = true;
 }
 
+void Bridge::inherit_control_gen(std::uint32_t gen) {
+    if (gen_inherited_) return;
+    gen_inherited_ = true;
+    inherited_gen_ = gen & ~1u;  // even: a whole generation
+    control_gen_ = inherited_gen_;
+}
+
+void Bridge::take_over_sequence(std::int64_t tick, const stream::Progress& progress) {
+    reported_program_ = static_cast<std::int64_t>(progress.program);
+    reported_next_seq_ = static_cast<std::int64_t>(progress.next_seq);
+    if (!period_seen_ && !taking_over_ && sequence_.program() == 0 && reported_program_ != 0) {
+        taking_over_ = true;  // the first period seen has a program this bridge never wrote
+        sequence_taken_over_ = false;
+    }
+    period_seen_ = true;
+    if (sequence_taken_over_ || stream_empty_at_tick_ < 0 || tick <= stream_empty_at_tick_) return;
+    sequence_taken_over_ = true;  // this period began after every block written before was taken
+    if (sequence_.program() == 0 && reported_program_ != 0) sequence_.accepted(reported_program_, reported_next_seq_ - 1);
+}
+
 // The control whose levels the component applied in a period: the one taken as generation `gen`
 // (earlier ones were superseded before a period read them). 0: none (or control-gen unconnected).
 void Bridge::name_applied_control(std::uint32_t gen) {
@@ -285,7 +317,8 @@ void Bridge::name_applied_control(std::uint32_t gen) {
         applied_control_ = controls_taken_.front();
         controls_taken_.pop_front();
     }
-    if (gen != applied_control_.gen && !unknown_gen_reported_) {  // never expected: the pins are not this bridge's
+    // Never expected but from the bridge before this one: the pins are not this bridge's.
+    if (gen != applied_control_.gen && gen != inherited_gen_ && !unknown_gen_reported_) {
         unknown_gen_reported_ = true;
         report(firtp_lcm::status_t::ERROR_LOST_STATE,
                "the component applied control generation " + std::to_string(gen) +
@@ -298,6 +331,11 @@ void Bridge::forward_states() {
     if (!streams_->has_states) return;
     hal_stream_data record[stream::state_elements];
     const int progress_group = stream::progress_group(options_.axes);
+    // The block stream seen empty while the tick pin is firtp.so's (netted: ahead of every state drained).
+    const std::int64_t tick_pin = hal_pin::get(pins_->tick);
+    if (!sequence_taken_over_ && stream_empty_at_tick_ < 0 && tick_pin > 0 && tick_pin > last_tick_ &&
+        hal_stream_depth(&streams_->blocks) == 0)
+        stream_empty_at_tick_ = tick_pin;
     while (hal_stream_read(&streams_->states, record, nullptr) == 0) {
         AxisState& s = streams_->pending;
         const int group = static_cast<int>(record[2].u);
@@ -335,6 +373,8 @@ void Bridge::forward_states() {
         }
         m.program = static_cast<std::int64_t>(progress.program);
         m.next_seq = static_cast<std::int64_t>(progress.next_seq);
+        inherit_control_gen(progress.control_gen);
+        take_over_sequence(tick, progress);
         name_applied_control(progress.control_gen);
         const bool known = progress.control_gen == applied_control_.gen;
         m.control_session = known ? applied_control_.session : 0;
@@ -350,12 +390,16 @@ void Bridge::forward_states() {
 }
 
 void Bridge::publish_status() {
+    // Taking over a running program: nothing said until the pins are netted and the program known
+    // (an unnetted pin reads 0: idle, an empty queue, as if the program were done).
+    if (taking_over_ && !sequence_taken_over_ && (!period_seen_ || reported_program_ != 0)) return;
     firtp_lcm::status_t s;
     s.utime = messages::now_utime();
     s.seq = ++status_seq_;
     s.tick = hal_pin::get(pins_->tick);
-    s.program = sequence_.program();
-    s.next_seq = sequence_.next_seq();
+    const bool own = sequence_.program() != 0;  // else the component's, as its axis states report it
+    s.program = own ? sequence_.program() : reported_program_;
+    s.next_seq = own ? sequence_.next_seq() : reported_next_seq_;
     const int stream_depth = hal_stream_depth(&streams_->blocks);
     s.queue_depth = hal_pin::get(pins_->queue_depth) + stream_depth;
     s.queue_free = hal_stream_maxdepth(&streams_->blocks) - 1 - stream_depth;

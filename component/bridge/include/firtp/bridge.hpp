@@ -19,6 +19,7 @@ namespace firtp {
 
 namespace stream {
 struct BlockRecord;
+struct Progress;
 }
 
 struct BridgeOptions {
@@ -103,6 +104,22 @@ private:
     std::deque<ControlTaken> controls_taken_;
     ControlTaken applied_control_;  // named by the latest axis state
     bool unknown_gen_reported_ = false;
+    // A bridge started again under a running component (firtp-lcm-bridge restarted while firtp.so
+    // runs on) takes over what the one before left: the control generation in effect (it counts on
+    // from it and names those levels control 0, without an error), and the component's program and
+    // next seq, once the block stream is empty (every block written before taken) and a period that
+    // began after that has reported them. Until then it publishes no FIRTP_STATUS (its pins may not
+    // be netted yet) and refuses blocks of that program (any, before it has seen a period) for a
+    // resend. A fresh component (its state stream empty when the bridge starts): nothing to take over.
+    void inherit_control_gen(std::uint32_t gen);
+    void take_over_sequence(std::int64_t tick, const stream::Progress& progress);
+    bool gen_inherited_ = false;
+    std::uint32_t inherited_gen_ = 0;
+    bool taking_over_ = false;  // the component ran before: periods waiting, or a program not this bridge's
+    bool period_seen_ = false;  // a period's progress drained
+    bool sequence_taken_over_ = false;
+    std::int64_t stream_empty_at_tick_ = -1;  // the tick pin when the block stream was seen empty
+    std::int64_t reported_program_ = 0, reported_next_seq_ = 1;  // by the latest axis state
     std::int32_t error_ = 0;
     std::string error_text_;
     std::int64_t rejected_ = 0;

@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace firtp {
 
@@ -22,16 +24,34 @@ struct InProcessSettings {
     int stream_depth = defaults::stream_depth;  // records the block stream holds: with queue, how far ahead a host may send
 };
 
+// firtp.so's machine as loadrt arguments, all but InProcessSettings' (axes=3 period_ns=...
+// tolerance=... max_velocity=...), and the two numbers the chain needs from them.
+struct ModuleMachine {
+    int axes = 3;
+    double period = defaults::servo_period;  // s
+    std::vector<std::string> arguments;
+};
+
+// A machine's planner settings, exactly (shortest text that reads back as the same double).
+ModuleMachine module_machine(const MachineConfig& machine);
+
 class InProcessComponent {
 public:
     // Loads firtp.so with the machine's settings, creates the bridge and nets them. Throws
     // std::runtime_error naming the step that failed.
     InProcessComponent(lcm::LCM& lcm, const MachineConfig& machine, const std::filesystem::path& module,
                const InProcessSettings& settings = {});
+    // The same with firtp.so's loadrt arguments given (e.g. as LinuxCNC loaded it, from a log).
+    InProcessComponent(lcm::LCM& lcm, const ModuleMachine& machine, const std::filesystem::path& module,
+               const InProcessSettings& settings = {});
     ~InProcessComponent();
     InProcessComponent(const InProcessComponent&) = delete;
     InProcessComponent& operator=(const InProcessComponent&) = delete;
 
+    // The bridge unloaded and loaded again while firtp.so runs on (in LinuxCNC: halcmd unload
+    // firtp-lcm-bridge, then lcm.hal again): its pins leave their signals, which keep their
+    // values, and the new bridge's join them; firtp.so runs `periods_between` periods alone.
+    void restart_bridge(int periods_between = 0);
     void step();   // one servo period in this thread (deterministic, no clock)
     void start();  // or: the servo thread on the real-time clock
     void poll();   // the bridge's non-real-time work: axis states and status out
@@ -40,6 +60,9 @@ public:
     long update_time_ns() const;
 
 private:
+    void net_bridge();
+    lcm::LCM* lcm_;
+    BridgeOptions bridge_options_;
     std::unique_ptr<Bridge> bridge_;
     bool started_ = false;
 };
