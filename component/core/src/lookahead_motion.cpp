@@ -425,18 +425,15 @@ void Lookahead::replan(std::size_t first) {
             refresh_current_leg();
             return;
         }
-        if (bad == front_unfit) {  // keep the plan accepted before (the override applies from the next block)
-            for (std::size_t i = kept; i < count_; ++i) seg(i) = saved_[i];
-            refresh_current_leg();
-            return;
-        }
         if (!saved_all) {
             for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
             saved_all = true;
         }
-        if (attempt == max_check_attempts || bad + 1 >= count_) {
+        if (bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_) {
             // Keep the plan accepted before (it stopped where the path ended then) and start the
-            // newest block from rest after it.
+            // newest block from rest after it. Also where the block under way cannot take the new
+            // plan (front_unfit): restoring the accepted plan alone left the newest block unplanned,
+            // at speed 0, and the tool rested there for good (lcnc__tort.ngc, its line 95).
             for (std::size_t i = 0; i + 1 < count_; ++i) seg(i) = saved_[i];
             if (count_ >= 2) {
                 // It was the last block: as it was classified then (adding the newest changed that).
