@@ -1,10 +1,10 @@
 #include "loaded_config.hpp"
 
+#include <firtp/loadrt_number.hpp>
 #include <firtp/version.hpp>
 
 #include <hal.h>
 
-#include <charconv>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -30,12 +30,7 @@ const hal_data_u& param(const std::string& name, hal_type_t type) {
 int s32(const std::string& name) { return param(name, HAL_S32).s; }
 bool bit(const std::string& name) { return param(name, HAL_BIT).b; }
 
-// Shortest text that reads back as the same double: the replay loads exactly these numbers.
-std::string number(const std::string& name) {
-    const double value = param(name, HAL_FLOAT).f;
-    char text[32];
-    return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
-}
+std::string number(const std::string& name) { return loadrt_number(param(name, HAL_FLOAT).f); }
 
 void add(firtp_lcm::config_t& m, const std::string& word) { m.args.append(m.args.empty() ? "" : "\n").append(word); }
 

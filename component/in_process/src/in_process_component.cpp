@@ -1,11 +1,11 @@
 #include <firtp/in_process_component.hpp>
 
 
+#include <firtp/loadrt_number.hpp>
 #include <firtp/text_cat.hpp>
 
 #include <firtp/hal_shim/runtime.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -16,13 +16,6 @@ namespace firtp {
 namespace {
 
 namespace shim = firtp::hal_shim;
-
-// Shortest text that reads back as the same double: firtp.so gets exactly the planner's numbers.
-std::string number_text(double value) {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-    return std::string(text, end);
-}
 
 void check(const shim::Status& status, const std::string& what) {
     if (!status.ok()) throw std::runtime_error(cat(what, ": ", status.message));
@@ -47,20 +40,20 @@ ModuleMachine module_machine(const MachineConfig& machine) {
     m.period = machine.period;
     m.arguments = {
         cat("axes=", std::to_string(machine.limits.axes)),
-        cat("tolerance=", number_text(machine.default_tolerance)),
+        cat("tolerance=", loadrt_number(machine.default_tolerance)),
         cat("meaning=", to_string(p.tolerance_meaning)),
         cat("period_ns=", std::to_string(std::llround(p.period * 1e9))),
-        cat("max_feed_override=", number_text(p.max_rate)),
-        cat("rate_reserve=", number_text(p.rate_reserve)),
+        cat("max_feed_override=", loadrt_number(p.max_rate)),
+        cat("rate_reserve=", loadrt_number(p.rate_reserve)),
     };
     if (p.fixed_chain) {  // the paper's chain; without t1 firtp.so smooths at the limits below
         m.arguments.push_back(cat("stages=", std::to_string(p.filters.stages)));
         for (int i = 0; i < p.filters.stages; ++i)
-            m.arguments.push_back(cat("t", std::to_string(i + 1), "=", number_text(p.filters.T[i])));
+            m.arguments.push_back(cat("t", std::to_string(i + 1), "=", loadrt_number(p.filters.T[i])));
     }
     auto per_axis = [&](const char* name, double AxisLimits::*limit) {
         std::string list;
-        for (int a = 0; a < p.limits.axes; ++a) list += cat(a ? "," : "", number_text(p.limits.axis[a].*limit));
+        for (int a = 0; a < p.limits.axes; ++a) list += cat(a ? "," : "", loadrt_number(p.limits.axis[a].*limit));
         m.arguments.push_back(cat(name, "=", list));
     };
     per_axis("max_velocity", &AxisLimits::max_velocity);
