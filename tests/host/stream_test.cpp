@@ -34,17 +34,16 @@ TEST_F(StreamTest, DeliversEveryBlockOnceInOrderWithinQueueFree) {
 }
 
 // Hands a program's blocks over one at a time, counting them.
-class CountingPuller : public BlockPuller {
+class CountingPuller : public SpanPuller {
 public:
-    CountingPuller(const std::vector<Block>& blocks, std::size_t& read) : blocks_(blocks), read_(read) {}
+    CountingPuller(const std::vector<Block>& blocks, std::size_t& read) : SpanPuller(blocks), read_(read) {}
     bool next(Block& block) override {
-        if (read_ == blocks_.size()) return false;
-        block = blocks_[read_++];
+        if (!SpanPuller::next(block)) return false;
+        ++read_;
         return true;
     }
 
 private:
-    const std::vector<Block>& blocks_;
     std::size_t& read_;
 };
 

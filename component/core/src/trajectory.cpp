@@ -35,16 +35,7 @@ StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const Ax
 
 StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                                    std::span<const Block> blocks, TrajectorySink& sink) {
-    struct Span : BlockPuller {
-        std::span<const Block> blocks;
-        std::size_t next_index = 0;
-        bool next(Block& block) override {
-            if (next_index == blocks.size()) return false;
-            block = blocks[next_index++];
-            return true;
-        }
-    } source;
-    source.blocks = blocks;
+    SpanPuller source(blocks);
     return plan_trajectory(parameters, start, source, sink);
 }
 

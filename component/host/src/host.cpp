@@ -66,18 +66,13 @@ private:
 
 std::int64_t records(const ProgramFeed& program) { return std::ssize(program.events) + static_cast<std::int64_t>(program.blocks); }
 
-class VectorPuller : public BlockPuller {
+// A program's blocks, the program kept alive as long as it reads them.
+class ProgramPuller : public SpanPuller {
 public:
-    explicit VectorPuller(std::shared_ptr<const Program> program) : program_(std::move(program)) {}
-    bool next(Block& block) override {
-        if (at_ == program_->blocks.size()) return false;
-        block = program_->blocks[at_++];
-        return true;
-    }
+    explicit ProgramPuller(std::shared_ptr<const Program> program) : SpanPuller(program->blocks), program_(std::move(program)) {}
 
 private:
     std::shared_ptr<const Program> program_;
-    std::size_t at_ = 0;
 };
 
 }  // namespace
@@ -86,7 +81,7 @@ ProgramFeed feed_of(std::shared_ptr<const Program> program) {
     ProgramFeed feed;
     feed.blocks = program->blocks.size();
     feed.events = program->events;
-    feed.read = [program] { return std::make_unique<VectorPuller>(program); };
+    feed.read = [program] { return std::make_unique<ProgramPuller>(program); };
     return feed;
 }
 

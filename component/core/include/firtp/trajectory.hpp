@@ -41,6 +41,21 @@ public:
     virtual bool next(Block& block) = 0;  // false: no more blocks
 };
 
+// The blocks of a span in memory, in order (the span must outlive it).
+class SpanPuller : public BlockPuller {
+public:
+    explicit SpanPuller(std::span<const Block> blocks) : blocks_(blocks) {}
+    bool next(Block& block) override {
+        if (next_ == blocks_.size()) return false;
+        block = blocks_[next_++];
+        return true;
+    }
+
+private:
+    std::span<const Block> blocks_;
+    std::size_t next_ = 0;
+};
+
 // Runs the planner as the servo thread would, blocks arriving as fast as it takes them, and hands
 // every sample and corner to `sink` as it is made (memory: the planner's queue, not the program's
 // duration). Throws std::invalid_argument naming the block's line when a block is invalid.
