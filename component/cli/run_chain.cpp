@@ -34,10 +34,7 @@ RunChain::RunChain(lcm::LCM& lcm, InProcessComponent& component, const PlanRun& 
 void RunChain::run_until(std::size_t samples, std::size_t periods) {
     for (; periods_ < periods && running() && samples_.count() < samples; ++periods_) {
         result_ = host_.step();  // the round ends as the others even when this says done
-        while (lcm_.handleTimeout(0) > 0) {
-        }
-        component_.step();
-        component_.poll();
+        component_period();
         progress_.update(static_cast<std::size_t>(host_.statistics().blocks_published),
                          static_cast<double>(periods_) * period_);
     }
@@ -51,14 +48,16 @@ void RunChain::finish() {
         throw std::runtime_error(cat("run: the program did not complete (", host::to_string(result_), "): ",
                                      host_.error()));
     if (moves_) return samples_.finish();
-    // Nothing to send: one period of the component for its state at rest.
-    for (int i = 0; i < 2; ++i) {
-        component_.step();
-        component_.poll();
-        while (lcm_.handleTimeout(0) > 0) {
-        }
-    }
+    // Nothing to send: a period of the component for its state at rest (and one to deliver it).
+    for (int i = 0; i < 2; ++i) component_period();
     samples_.finish_at_rest();
+}
+
+void RunChain::component_period() {
+    while (lcm_.handleTimeout(0) > 0) {
+    }
+    component_.step();
+    component_.poll();
 }
 
 void PlanDifference::add(const AxisVector& x, std::deque<AxisVector>& mine, std::deque<AxisVector>& theirs,

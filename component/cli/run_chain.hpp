@@ -36,6 +36,7 @@ public:
     const host::Host& host() const { return host_; }
 
 private:
+    void component_period();  // LCM delivered, then one servo period of the component and its bridge
     lcm::LCM& lcm_;
     InProcessComponent& component_;
     double period_;
