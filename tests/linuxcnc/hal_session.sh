@@ -49,20 +49,25 @@ else
   skip "$installed is not this build's and $moddir is not writable: cmake --build BUILD --target install-linuxcnc (as root), or run as root"
 fi
 
-# One HAL session per machine: wait for someone else's to end rather than break it.
-for _ in $(seq 60); do running || break; sleep 1; done
-if running; then echo "FAIL: another HAL session (rtapi_app) is still running after 60 s"; exit 1; fi
+# One HAL session per machine: wait for someone else's (or this test's previous one) to end rather
+# than break it.
+wait_no_session() {
+  for _ in $(seq 60); do running || return 0; sleep 1; done
+  echo "FAIL: another HAL session (rtapi_app) is still running after 60 s"; exit 1
+}
+wait_no_session
 
 # Runs $work/$1 (readable by the session's user) under halrun as that user, output in
-# $work/halrun.log; fails the test with the log if halrun fails. In the background, so a signal
-# reaches the cleanup at once.
+# $work/halrun.log; fails the test with the log (and the shared memory present) if halrun fails.
+# In the background, so a signal reaches the cleanup at once.
 run_halrun() {
+  wait_no_session
   session=1
   (cd "$work" && as_user timeout 60 halrun -f "$1") > "$work/halrun.log" 2>&1 &
   halrun_pid=$!
   if ! wait "$halrun_pid"; then
     halrun_pid=
-    echo "FAIL: halrun -f $1"; cat "$work/halrun.log"; exit 1
+    echo "FAIL: halrun -f $1"; cat "$work/halrun.log"; ipcs -m -c; exit 1
   fi
   halrun_pid=
 }
