@@ -231,9 +231,14 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 // - 32/878, 37/363: a junction step of almost no speed change has a second stage of 1e-17 s; its
 //   jerks of 1e21 cancelled with rounding errors of 1e5, the check refused the resume, and an
 //   unchecked plan jumped 10 um at rest.
+// - 41/404: at rest after a rate change, every plan reached axis 1's acceleration limit within
+//   1.4e-9 of it (383.2225850 on 383.2225845), beyond the check's slack of 1e-9: every plan was
+//   refused, and the unchecked one left a block its legs did not cover (a 1.5 mm jump).
+// - 35/1070: stayed at rest for good under an attempted fix of 41/404 (kept as a guard).
 TEST(RandomMachines, HoldResumeRegressions) {
     const std::pair<std::uint64_t, int> programs[] = {{34, 1723}, {33, 1222}, {37, 207}, {38, 858}, {36, 1423},
-                                                      {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363}};
+                                                      {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363},
+                                                      {41, 404}, {35, 1070}};
     for (const auto& [seed, index] : programs) {
         SCOPED_TRACE("seed " + std::to_string(seed) + ", program " + std::to_string(index));
         check_rate_changes(seed, 0, true, true, index);

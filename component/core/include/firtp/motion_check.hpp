@@ -60,7 +60,7 @@ struct LimitCheck {
 };
 
 // The largest |velocity|, |acceleration| and |jerk| of the legs' sum on [from, to] against
-// `limits` (relative slack 1e-9; limits of 0 are not checked). A one-stage kernel's jump in
+// `limits` (relative slack 1e-8; limits of 0 are not checked). A one-stage kernel's jump in
 // acceleration counts as jump / period of jerk, as a drive differentiating the samples sees it.
 // Allocation-free after construction: sized for `max_legs` legs.
 class LimitSweep {
