@@ -34,8 +34,21 @@ OutputFiles::~OutputFiles() {
     }
 }
 
-std::filesystem::path OutputFiles::create(const std::filesystem::path& target) {
-    if (target.filename().empty()) throw failure(target, "not a file name");
+std::filesystem::path OutputFiles::create(const std::filesystem::path& requested) {
+    if (requested.filename().empty()) throw failure(requested, "not a file name");
+    std::error_code absent;  // (not there yet: the usual case)
+    const std::filesystem::file_status status = std::filesystem::status(requested, absent);
+    // A device or a pipe (--csv /dev/null) is written in place: renaming onto it would replace it.
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        if (std::filesystem::is_directory(status)) throw failure(requested, "is a directory");
+        return requested;
+    }
+    // Through a symbolic link: beside the file it names, which is the one replaced.
+    std::error_code error;
+    const std::filesystem::path target = std::filesystem::is_symlink(std::filesystem::symlink_status(requested, absent))
+                                             ? std::filesystem::weakly_canonical(requested, error)
+                                             : requested;
+    if (error) throw failure(requested, error.message());
     std::string name = (target.parent_path() / cat(".", target.filename().string(), ".XXXXXX")).string();
     const int fd = ::mkstemp(name.data());
     if (fd < 0) throw failure(target, std::strerror(errno));

@@ -16,8 +16,10 @@ public:
     OutputFiles& operator=(const OutputFiles&) = delete;
     ~OutputFiles();
 
-    // Creates an empty temporary ".NAME.XXXXXX" in the target's directory and returns its path.
-    // Throws std::runtime_error naming the target when that fails.
+    // Creates an empty temporary ".NAME.XXXXXX" in the target's directory and returns its path
+    // (through a symbolic link: the directory of the file it names). A target that exists and is
+    // not a file (a device, a pipe) is returned itself, written in place. Throws
+    // std::runtime_error naming the target when that fails.
     std::filesystem::path create(const std::filesystem::path& target);
 
     // create(), then lets `fill` write the temporary as text; throws naming the target unless every

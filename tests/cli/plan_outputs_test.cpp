@@ -4,8 +4,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace firtp::cli_test {
 namespace {
@@ -275,6 +282,57 @@ TEST(PlanOutputs, StreamedJsonIsTheDocumentsOwnDump) {
     const std::string text = read_file(dir / "out.json");
     EXPECT_EQ(json::parse(text)["corners"], json::array());
     EXPECT_EQ(text, json::parse(text).dump(2) + "\n");
+}
+
+// An output that is not a file is written in place: `--csv /dev/null` used to rename a temporary
+// onto /dev/null and so replace the device with a file. A pipe stands in for the device here.
+TEST(PlanOutputs, CsvIntoAPipeIsWrittenInPlace) {
+    TempDir dir;
+    const std::filesystem::path fifo = dir / "samples.fifo";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::atomic<bool> done{false};
+    Outcome outcome;
+    std::thread plan([&] {
+        outcome = run_firtp({"plan", example("diamond.ngc").string(), "--csv", fifo.string()});
+        done = true;
+    });
+    const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+    ASSERT_GE(fd, 0);
+    std::string received;
+    char buffer[1 << 16];
+    for (bool last = false;;) {  // until firtp has exited and the pipe is empty
+        pollfd p{fd, POLLIN, 0};
+        ::poll(&p, 1, 50);
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n > 0) {
+            received.append(buffer, static_cast<std::size_t>(n));
+            continue;
+        }
+        if (last) break;
+        last = done;
+    }
+    plan.join();
+    ::close(fd);
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    EXPECT_EQ(dir.names(), std::set<std::string>{"samples.fifo"});  // no temporary beside it
+    const Outcome file = run_firtp({"plan", example("diamond.ngc").string(), "--csv", (dir / "samples.csv").string()});
+    ASSERT_EQ(file.exit_code, 0) << file.err;
+    EXPECT_GT(received.size(), 10000u);
+    EXPECT_EQ(received, read_file(dir / "samples.csv"));
+}
+
+// Through a symbolic link the file it names is written; the link stays.
+TEST(PlanOutputs, CsvThroughASymbolicLinkReplacesTheFileItNames) {
+    TempDir dir;
+    std::filesystem::create_directory(dir / "data");
+    write_file(dir / "data" / "samples.csv", "old\n");
+    std::filesystem::create_symlink("data/samples.csv", dir / "latest.csv");
+    const Outcome outcome = run_firtp({"plan", example("diamond.ngc").string(), "--csv", (dir / "latest.csv").string()});
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "latest.csv"));
+    EXPECT_EQ(read_file(dir / "data" / "samples.csv").rfind("t,x,y,z,", 0), 0u);
+    EXPECT_EQ(dir.names(), (std::set<std::string>{"data", "latest.csv"}));
 }
 
 }  // namespace
