@@ -370,15 +370,22 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         *bad = nearest;
         return false;
     }
-    // Every corner the changed motion can reach: within the widest kernel of its first change.
+    // Every corner the changed motion can reach. The motion changes from the step entering `first`
+    // on (the legs after it and the junction step before it): nothing moves differently before its
+    // widest kernel starts (2 periods to spare). A corner whose last check looked only before that
+    // passed on this very motion.
+    const double unchanged_until = enter_[first] - 0.5 * width - 2.0 * parameters_.period;
     for (std::size_t i = from; i + 1 < last; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
-        if (when_[i] < enter_[first] - width - 4.0 * parameters_.period) continue;
+        if (when_[i] + s.checked_reach < unchanged_until) continue;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period);
+            s.checked_reach = 0.5 * max_width_ + parameters_.period;
         } else {
-            s.predicted_error = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period).distance;
+            const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period);
+            s.predicted_error = approach.distance;
+            s.checked_reach = approach.latest - when_[i];
         }
         const double epsilon = s.tolerance * (1.0 - error_margin);
         excess_ = s.predicted_error / epsilon;

@@ -310,9 +310,10 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 }  // namespace
 
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases) {
-    Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL};
+    Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
     double t = guess;
     for (int i = 0; i < 6; ++i) {
+        best.latest = std::max(best.latest, t);
         const AxisState s = relative_state(legs, corner, t);
         const double d = s.position.norm();
         if (d < best.smooth) best.smooth = d, best.time = t;
@@ -333,6 +334,7 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         double nearest = HUGE_VAL;
         AxisVector previous = relative_position(legs, corner, (k0 - sampled_chords + phase) * period);
         for (double k = k0 - sampled_chords + 1; k <= k0 + sampled_chords + 1; ++k) {
+            best.latest = std::max(best.latest, (k + phase) * period);
             const AxisVector next = relative_position(legs, corner, (k + phase) * period);
             nearest = std::min(nearest, chord_distance(previous, next));
             previous = next;

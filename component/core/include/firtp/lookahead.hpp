@@ -36,6 +36,7 @@
 #include <firtp/types.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace firtp {
@@ -125,6 +126,7 @@ private:
         bool unfit = false;        // no legs at these speeds cover it (fits() is not monotone in the speeds)
         double next_a = 0.0;       // the speed after the junction (the next segment's a)
         double predicted_error = 0.0;  // the check's closest approach at the junction
+        double checked_reach = std::numeric_limits<double>::infinity();  // how far after the junction (s) its last check looked
         CornerBound bound = CornerBound::feed;  // what limited the speed at the junction
         int bound_axis = -1;
         double enter = 0.0;        // forward pass: its entry step's centre, s (timeline clock)

@@ -98,6 +98,7 @@ struct Approach {
     double time = 0.0;      // of the smooth path's approach
     double smooth = 0.0;    // of the smooth path from the corner point, at `time`
     double sampled = 0.0;   // of the chords between the samples within sampled_chords periods of it
+    double latest = 0.0;    // the latest time the search looked at the path
 };
 
 constexpr int sampled_chords = 3;
