@@ -19,11 +19,18 @@ set -euo pipefail
 firtp=$1 work=$2
 ip link set lo up
 ip route add 224.0.0.0/4 dev lo
+# listening LOG TEXT: wait (up to 30 s) until the process logging to LOG says TEXT, which each
+# says once subscribed.
+listening() {
+  for _ in $(seq 300); do grep -q "$2" "$1" && return 0; sleep 0.1; done
+  echo "not listening after 30 s:"; cat "$1"; return 1
+}
 "$firtp" record "$work/controls.lcmlog" --idle 2 --duration 60 > "$work/record.log" 2>&1 &
 record=$!
+listening "$work/record.log" '^firtp record: recording'  # serve publishes FIRTP_CONFIG at start
 "$firtp" serve --ini examples/diamond.ini --exit-when-done --duration 30 > "$work/serve.log" 2>&1 &
 serve=$!
-sleep 0.5  # serve publishes FIRTP_CONFIG at start: the recorder is already running
+listening "$work/serve.log" '^firtp serve: servo thread'
 { sleep 0.35; echo "feed 0.6"; sleep 0.35; echo hold; sleep 0.6; echo resume; sleep 0.4; echo "feed 1"; sleep 5; } |
   "$firtp" host examples/diamond.ngc --ini examples/diamond.ini > "$work/host.log" 2>&1 ||
   { echo "host failed"; cat "$work/host.log" "$work/serve.log"; kill $record $serve; exit 1; }

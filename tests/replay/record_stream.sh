@@ -42,7 +42,14 @@ ip route add 224.0.0.0/4 dev lo
 record=$!
 "$firtp" serve "${machine[@]}" --queue "$queue" --exit-when-done --duration $((seconds > 0 ? seconds + 1 : 240)) > "$work/serve.log" 2>&1 &
 serve=$!
-sleep 0.5
+# The host starts once both listen (each says so when subscribed): a recorder that subscribes
+# after the first blocks went out would miss them (a fixed 0.5 s was short on a loaded machine).
+for _ in $(seq 300); do
+  grep -q '^firtp record: recording' "$work/record.log" && grep -q '^firtp serve: servo thread' "$work/serve.log" && break
+  sleep 0.1
+done
+grep -q '^firtp record: recording' "$work/record.log" && grep -q '^firtp serve: servo thread' "$work/serve.log" \
+  || { echo "recorder or component not listening after 30 s"; cat "$work/record.log" "$work/serve.log"; kill $record $serve 2>/dev/null; exit 1; }
 start=$(date +%s.%N)
 host=0; "${limit[@]}" "$firtp" host "$work/stream.ngc" "${machine[@]}" < /dev/null > "$work/host.log" 2>&1 || host=$?
 if [ $host != 0 ] && ! [ $host = 124 -a "$seconds" != 0 ]; then
