@@ -315,10 +315,14 @@ void Lookahead::junction_caps(std::size_t i) {
     }
 }
 
+void Lookahead::set_turn(Segment& s, const AxisVector& next_u) const {
+    s.turn = make_turn(s.u, next_u, limits_);
+    s.turn_box = rules_.unit_box(s.turn.direction);
+}
+
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
-    s.turn = make_turn(s.u, seg(i + 1).u, limits_);
-    s.turn_box = rules_.unit_box(s.turn.direction);
+    set_turn(s, seg(i + 1).u);
     s.learned_cap = infinity;
     s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal || seg(i + 1).dwell > 0.0
                  ? Kind::stop
@@ -346,27 +350,18 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     in_.u = s.u;
     in_.u_unit_box = s.u_box;
     const bool moving = i == 0 && la_.frozen_.moving;
-    // The entry step (entry_shape()): the frozen one, a start, a corner at one speed, or a dense
-    // junction (speed and turn at once: found at each speed).
+    // The entry step: the frozen one (fixed), one whose box scales with the speed (entry_shape at
+    // speed 1), or a dense junction (speed and turn at once: entry_shape() at each speed).
     if (moving) {
         in_.in = la_.frozen_.step.shape();
         entry_fixed_ = true;
-    } else if (la_.entry_is_stop(i)) {
-        in_.in = {0.0, s.u, s.regime.t2, s.u_box};
-        entry_scaled_ = true, in_scale_ = s.alpha;
-    } else if (la_.seg(i - 1).kind != Kind::dense) {
-        const Segment& prev = la_.seg(i - 1);
-        in_.in = {0.0, prev.turn.direction, prev.junction.t2, prev.turn_box};
-        entry_scaled_ = true, in_scale_ = prev.turn_alpha;
+    } else if (la_.entry_scales(i)) {
+        in_.in = la_.entry_shape(i, 1.0);
+        entry_scaled_ = true, in_scale_ = in_.in.box;
     }
-    // The exit step (exit_shape()): a stop or a junction, box = b * its scale.
-    if (la_.exit_is_stop(i)) {
-        in_.out = {0.0, -s.u, s.regime.t2, s.u_box};
-        out_scale_ = s.alpha;
-    } else {
-        in_.out = {0.0, s.turn.direction, s.junction.t2, s.turn_box};
-        out_scale_ = s.turn_alpha;
-    }
+    // The exit step: a stop or a junction, box = b * its box at speed 1.
+    in_.out = la_.exit_shape(i, 1.0);
+    out_scale_ = in_.out.box;
     // Across a sparse corner the ramps on either side may swing an axis the other way: keep T2
     // between their boxes, half on each side, where the corner's own box does not.
     corner_in_ = i == 0 ? la_.frozen_.moving && la_.frozen_.junction : !la_.entry_is_stop(i);
@@ -406,13 +401,12 @@ Lookahead::DenseJunction Lookahead::dense_junction(std::size_t i) const {
     if (i == 0 && frozen_.moving) {
         j.width_fixed = true;
         j.width_add = frozen_.step.kernel.width();
-    } else if (entry_is_stop(i)) {
-        j.width_scale = j.s->alpha, j.width_add = j.s->regime.t2;
+    } else if (entry_scales(i)) {
+        const StepShape unit = entry_shape(i, 1.0);
+        j.width_scale = unit.box, j.width_add = unit.t2;
     } else {
-        const Segment& prev = seg(i - 1);
-        if (prev.kind == Kind::dense) j.dense_before = &prev;
-        else j.width_scale = prev.turn_alpha;
-        j.width_add = prev.junction.t2;
+        j.dense_before = &seg(i - 1);
+        j.width_add = j.dense_before->junction.t2;
     }
     j.bounded = !(j.s->turn.beta < straight_angle || !std::isfinite(j.s->tolerance));
     if (j.bounded) {
@@ -720,8 +714,7 @@ void Lookahead::place_hold_stop() {
             s.hold_split = true;
             s.exact_stop = false;
             s.brake = true;
-            s.turn = make_turn(s.u, s.u, limits_);
-            s.turn_box = rules_.unit_box(s.turn.direction);
+            set_turn(s, s.u);
             s.learned_cap = infinity;
             insert_after(i, rest);
             junction_caps(i);

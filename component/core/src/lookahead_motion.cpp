@@ -380,8 +380,9 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
         if (when_[i] + s.checked_reach < unchanged_until) continue;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
-            s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period);
-            s.checked_reach = 0.5 * max_width_ + parameters_.period;
+            double latest = 0.0;
+            s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period, &latest);
+            s.checked_reach = latest - when_[i];
         } else {
             const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period);
             s.predicted_error = approach.distance;

@@ -19,8 +19,8 @@ constexpr double negligible_stage = 1e-9;
 // Knots this close are one: the steps that meet at a junction start on sums that round differently.
 constexpr double same_knot = 1e-12;
 
-// A knot of the sum: the jerk changes by `jerk`, the acceleration by `acceleration` (one-stage
-// kernels), the velocity by `velocity` (sharp steps).
+// A knot of the sum: a time at which one step's edge (LimitSweep::Edge) changes the jerk (two-stage
+// kernels), the acceleration (one-stage) or the velocity (sharp steps) by its jump, or by -jump.
 using Knot = LimitSweep::Knot;
 
 // The two stages that bound a kernel's derivatives (the first two of a chain).
@@ -345,8 +345,10 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     return best;
 }
 
-double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period) {
+double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,
+                     double* latest) {
     const double from = at - 0.5 * width - period, to = at + 0.5 * width + period;
+    if (latest != nullptr) *latest = to;
     // The legs commanded while the samples in [from, to] can feel them, and where the first starts
     // (relative to the corner point, the end of legs[corner]).
     std::size_t lo = corner, hi = corner;

@@ -174,6 +174,9 @@ private:
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
     bool exit_is_stop(std::size_t i) const { return i + 1 == count_ || seg(i).kind == Kind::stop; }
+    // entry_shape(i, a) is entry_shape(i, 1) with its box times a: a start, a corner at one speed
+    // (not the frozen step, not a dense junction, whose turn changes with the speed).
+    bool entry_scales(std::size_t i) const { return !(i == 0 && frozen_.moving) && (entry_is_stop(i) || seg(i - 1).kind != Kind::dense); }
 
     // Regimes and steps.
     Regime dense_regime(double epsilon) const;
@@ -191,6 +194,7 @@ private:
 
     // Geometry and caps.
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
+    void set_turn(Segment& s, const AxisVector& next_u) const;  // s.turn towards next_u, and its turn_box
     void classify(std::size_t i);           // dense or not, from its length and its junctions
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i
     bool smooth(std::size_t i) const;       // junction i does not slow the blocks down

@@ -111,7 +111,9 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
 
 // The largest distance from the programmed path (the legs commanded nearby, as straight
 // segments) of the samples (t = k period) within `width` / 2 of time `at`, the corner at the end
-// of legs[corner] (contour tolerance; `width`: the widest kernel).
-double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period);
+// of legs[corner] (contour tolerance; `width`: the widest kernel). `latest`, when given: the latest
+// time it looked at the path (as Approach::latest).
+double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,
+                     double* latest = nullptr);
 
 }  // namespace firtp
