@@ -1,41 +1,21 @@
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <cstdlib>
 
 namespace firtp {
 
+using search::highest;
+using search::lowest;
+using search::Probe;
+
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
-constexpr int bisection_steps = 48;
 constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junction this slow is its stop
-
-// Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
-template <class F>
-double highest(F&& ok, double lo, double hi) {
-    if (!(hi > lo)) return lo;
-    if (ok(hi)) return hi;
-    for (int i = 0; i < bisection_steps && hi - lo > 1e-13 * hi; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (ok(mid) ? lo : hi) = mid;
-    }
-    return lo;
-}
-
-// Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
-template <class F>
-double lowest(F&& ok, double lo, double hi) {
-    if (!(hi > lo)) return hi;
-    if (ok(lo)) return lo;
-    for (int i = 0; i < bisection_steps && hi - lo > 1e-13 * hi; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (ok(mid) ? hi : lo) = mid;
-    }
-    return hi;
-}
 
 AxisVector unit(const AxisVector& v) {
     const double n = v.norm();
@@ -93,6 +73,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     leg_of_.resize(segments_.size());
     when_.resize(segments_.size());
     enter_.resize(segments_.size());
+    entry_memo_.resize(segments_.size());
     reports_.resize(64);
 }
 
@@ -236,6 +217,19 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     return std::max(corners, std::min(ramps, s.feed_max));
 }
 
+double Lookahead::sampled_speed(double alpha, double t2, double s, double du, double epsilon) const {
+    const std::array<double, 5> args{alpha, t2, s, du, epsilon};
+    std::uint64_t hash = 0;
+    for (double x : args) hash = (hash ^ std::bit_cast<std::uint64_t>(x)) * 0x100000001b3ull;
+    CornerMemo& memo = corner_memo_[(hash >> 32) % corner_memo_.size()];
+    if (!memo.used || memo.args != args) {
+        memo.args = args;
+        memo.answer = sampled_corner_speed(alpha, t2, s, du, jerk_norm_, parameters_.period, epsilon);
+        memo.used = true;
+    }
+    return memo.answer;
+}
+
 // Planned dense, its corners' steps must fit the legs on both sides (room) and, with the jerk
 // stage each junction would then get (the wider of its blocks' dense regimes), keep about half the
 // tolerance for the step itself (lookahead.hpp, Regime).
@@ -253,8 +247,7 @@ double Lookahead::dense_estimate(std::size_t i) const {
         if (!(alpha > 0.0)) continue;
         v = std::min(v, std::sqrt(std::min(seg_length(j), seg_length(j + 1)) / alpha));
         if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance))
-            v = std::min(v, sampled_corner_speed(alpha, r.t2, s.turn.s, s.turn.du.norm(), jerk_norm_, parameters_.period,
-                                                 s.tolerance));
+            v = std::min(v, sampled_speed(alpha, r.t2, s.turn.s, s.turn.du.norm(), s.tolerance));
     }
     return v;
 }
@@ -297,8 +290,7 @@ void Lookahead::junction_caps(std::size_t i) {
     if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
         double epsilon = s.tolerance;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
-        s.corner_cap = sampled_corner_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), jerk_norm_,
-                                            parameters_.period, epsilon * (1.0 - 1e-6));  // rounding: to spare
+        s.corner_cap = sampled_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - 1e-6));  // rounding: to spare
         s.cap_bound = CornerBound::tolerance;
     }
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
@@ -380,6 +372,27 @@ const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     return in_;
 }
 
+int Lookahead::Fitting::key(double* out) const {
+    const int axes = la_.limits_.axes;
+    int n = 0;
+    auto put = [&](double v) { out[n++] = v; };
+    auto put_vector = [&](const AxisVector& v) {
+        for (int k = 0; k < axes; ++k) put(v[k]);
+    };
+    put(la_.rules_.t2);
+    put(in_.length), put(in_.alpha), put(in_.u_unit_box), put_vector(in_.u);
+    put(in_.entry_elapsed);
+    put((entry_fixed_ ? 1 : 0) + (entry_scaled_ ? 2 : 0) + (corner_in_ ? 4 : 0) + (corner_out_ ? 8 : 0));
+    if (entry_fixed_ || entry_scaled_) {
+        put(entry_scaled_ ? in_scale_ : in_.in.box), put(in_.in.t2), put(in_.in.unit_box), put_vector(in_.in.direction);
+    } else {  // a dense junction: entry_shape() from the block before at each speed
+        const Segment& prev = la_.seg(i_ - 1);
+        put(prev.b), put_vector(prev.u), put(prev.junction.t2), put_vector(prev.junction.cap);
+    }
+    put(out_scale_), put(in_.out.t2), put(in_.out.unit_box), put_vector(in_.out.direction);
+    return n;
+}
+
 ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
     ProfileInput in = Fitting(*this, i).input(a, b);
     in.gaps = nullptr;  // the Fitting's, gone
@@ -458,12 +471,20 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
         return v;
     }
     Fitting fits(*this, i);
-    return highest(
+    EntryMemo& memo = entry_memo_[ring(i)];
+    decltype(EntryMemo::key) key;
+    int size = fits.key(key.data());
+    key[size++] = s.feed_max, key[size++] = exit_max;
+    if (size == memo.size && std::equal(key.begin(), key.begin() + size, memo.key.begin())) return memo.answer;
+    const double answer = highest(
         [&](double a) {
             const double b = std::min(a, exit_max);
-            return fits(a, std::max(a, b), b);
+            return fits.probe(a, std::max(a, b), b);
         },
         0.0, s.feed_max);
+    std::copy(key.begin(), key.begin() + size, memo.key.begin());
+    memo.size = size, memo.answer = answer;
+    return answer;
 }
 
 // ---- Passes ------------------------------------------------------------------------------------
@@ -538,32 +559,33 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
     } else {
         Fitting fitting(*this, i);
         auto fits = [&](std::size_t, double a, double p, double b) { return fitting(a, p, b); };
+        auto probe = [&](double a, double p, double b) { return fitting.probe(a, p, b); };
         double a = entry, p = 0.0, b = 0.0;
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
-                p = highest([&](double v) { return fits(i, v, v, v); }, 0.0, std::min(pt, s.entry_max));
+                p = highest([&](double v) { return probe(v, v, v); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
             } else if (pt >= a) {
-                p = highest([&](double v) { return fits(i, a, v, v); }, a, pt);
+                p = highest([&](double v) { return probe(a, v, v); }, a, pt);
             } else if (s.brake) {
                 p = a;  // the stop step itself brakes: no ramp down to a standstill before it
             } else {
-                p = fits(i, a, pt, pt) ? pt : lowest([&](double v) { return fits(i, a, v, v); }, pt, a);
+                p = fits(i, a, pt, pt) ? pt : lowest([&](double v) { return probe(a, v, v); }, pt, a);
             }
             b = p;
         } else {
             const double bt = std::min({s.exit_max, pt, seg(i + 1).brake ? 0.0 : target(i + 1)});
             if (a < 0.0) {
-                p = highest([&](double v) { return fits(i, v, v, std::min(v, bt)); }, 0.0, std::min(pt, s.entry_max));
+                p = highest([&](double v) { return probe(v, v, std::min(v, bt)); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
                 b = std::min(p, bt);
             } else {
                 if (fits(i, a, std::max(a, bt), bt)) b = bt;
-                else if (bt > a) b = highest([&](double v) { return fits(i, a, v, v); }, a, bt);
-                else b = lowest([&](double v) { return fits(i, a, a, v); }, bt, std::min(a, s.exit_max));
+                else if (bt > a) b = highest([&](double v) { return probe(a, v, v); }, a, bt);
+                else b = lowest([&](double v) { return probe(a, a, v); }, bt, std::min(a, s.exit_max));
                 const double top = std::max(a, b);
-                if (pt >= top) p = highest([&](double v) { return fits(i, a, v, b); }, top, pt);
-                else p = fits(i, a, pt, b) ? pt : lowest([&](double v) { return fits(i, a, v, b); }, pt, top);
+                if (pt >= top) p = highest([&](double v) { return probe(a, v, b); }, top, pt);
+                else p = fits(i, a, pt, b) ? pt : lowest([&](double v) { return probe(a, v, b); }, pt, top);
                 p = std::max(p, std::min(a, b));  // no standstill inside the block
             }
         }

@@ -54,7 +54,7 @@ StepView view(const StepShape& shape, int role = -1) {
 // GapMemo's entry for two roles (the gap is symmetric: the same products and sums); -1: none.
 int memo_pair(int x, int y) {
     if (x > y) std::swap(x, y);
-    constexpr int index[4][4] = {{-1, 0, 1, 2}, {-1, 3, 4, 5}, {-1, -1, 6, 7}, {-1, -1, -1, -1}};
+    static constexpr std::int8_t index[4][4] = {{-1, 0, 1, 2}, {-1, 3, 4, 5}, {-1, -1, 6, 7}, {-1, -1, -1, -1}};
     return x < 0 ? -1 : index[x][y];
 }
 
@@ -154,12 +154,15 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
         if (rank(i) > rank(fastest)) fastest = i;
     }
     const double extra = block.length - used;
+    legs.margin = extra + 1e-12 * block.length;
     legs.fits = extra >= -1e-12 * block.length;
     if (legs.fits && extra != 0.0) {
         if (speed[fastest] > 0.0) x[fastest] = std::max(0.0, x[fastest] + extra / speed[fastest]);
         else legs.fits = extra <= 0.0;  // nothing moves: the block cannot be covered
     }
-    for (int i = 0; i < n; ++i) (leg[i] == 0 ? legs.x0 : leg[i] == 1 ? legs.xp : legs.x1) += x[i];
+    std::array<double, 3> sum{};
+    for (int i = 0; i < n; ++i) sum[leg[i]] += x[i];
+    legs.x0 = sum[0], legs.xp = sum[1], legs.x1 = sum[2];
     return legs;
 }
 

@@ -32,9 +32,11 @@
 #include <firtp/parameters.hpp>
 #include <firtp/profile.hpp>
 #include <firtp/report.hpp>
+#include <firtp/search.hpp>
 #include <firtp/timeline.hpp>
 #include <firtp/types.hpp>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -241,6 +243,12 @@ private:
         Fitting& operator=(const Fitting&) = delete;
         const ProfileInput& input(double a, double b);
         bool operator()(double a, double p, double b) { return profile_legs(la_.rules_, input(a, b), a, p, b).fits; }
+        search::Probe probe(double a, double p, double b) {
+            const ProfileLegs legs = profile_legs(la_.rules_, input(a, b), a, p, b);
+            return {legs.fits, legs.margin};
+        }
+        // Everything input() reads but the speeds, as numbers (how many): equal keys, equal inputs.
+        int key(double* out) const;
 
     private:
         const Lookahead& la_;
@@ -252,6 +260,25 @@ private:
         bool corner_in_ = false, corner_out_ = false;
         GapMemo gaps_;  // the directions stay the same unless the entry is a dense junction
     };
+
+    // sampled_corner_speed() (jerk_norm_, the period) by its other arguments: link() and classify()
+    // ask again about junctions that have not changed. Direct-mapped on the arguments' bits.
+    struct CornerMemo {
+        std::array<double, 5> args{};
+        double answer = 0.0;
+        bool used = false;
+    };
+    mutable std::array<CornerMemo, 32> corner_memo_{};
+    double sampled_speed(double alpha, double t2, double s, double du, double epsilon) const;
+
+    // max_entry()'s last search per ring slot and all it read (Fitting::key, feed_max, exit_max):
+    // the backward pass asks again where nothing changed, to see that nothing did.
+    struct EntryMemo {
+        std::array<double, 8 * max_axes + 16> key{};
+        int size = -1;
+        double answer = 0.0;
+    };
+    mutable std::vector<EntryMemo> entry_memo_;
 
     // Motion.
     double frozen_centre() const;           // seconds from the timeline's now

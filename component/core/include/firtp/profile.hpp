@@ -76,6 +76,7 @@ struct ProfileLegs {
     double a = 0.0, p = 0.0, b = 0.0;     // speeds of the entry, cruise and exit legs
     double x0 = 0.0, xp = 0.0, x1 = 0.0;  // their durations (command time); 0 where a leg is merged
     bool fits = false;
+    double margin = 0.0;  // length left over (+ the rounding allowance): >= 0 about where it fits
     double duration() const { return x0 + xp + x1; }
 };
 

@@ -1,0 +1,171 @@
+// The planner's one-dimensional searches: the highest (or lowest) speed a test passes.
+//
+// The answer is defined by bisection: 48 halvings at most, to 1e-13 of the upper end. A test that
+// also says by how much it passes (Probe::margin, the length left over in a block) lets the search
+// find where it flips first (ITP, a safeguarded regula falsi: about ten tests where bisection
+// makes 45) and then replay the bisection's halvings against that bracket: a halving point at or
+// below the last passing speed passes, one at or above the first failing speed fails, and only
+// points inside the bracket are tested. For a test that is monotone that is the bisection's
+// answer, bit for bit. The answer is tested once more where it was only inferred; if it fails (a
+// test that is not monotone there), the plain bisection decides. Where the margin jumps at the
+// flip, the guide cannot help: a few tests more than bisection (search_test.cpp holds it to 8).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
+namespace firtp::search {
+
+constexpr int bisection_steps = 48;
+constexpr double resolution = 1e-13;  // of the upper end
+
+struct Probe {
+    bool ok = false;
+    double margin = 0.0;  // >= 0 about where ok; a guide only (ok decides)
+};
+
+// Narrows [x_ok, x_bad] (either order) to 2 eps by the ITP method (Oliveira and Takahashi, ACM
+// TOMS 47(1), 2020) on the margins: regula falsi, truncated and projected so that it never needs
+// more than one test beyond bisection's count, superlinear where the margin is smooth.
+template <class F>
+void narrow(F& probe, double& x_ok, double m_ok, double& x_bad, double m_bad, double eps) {
+    const bool ok_low = x_ok < x_bad;
+    double a = ok_low ? x_ok : x_bad, b = ok_low ? x_bad : x_ok;
+    double ya = ok_low ? m_ok : m_bad, yb = ok_low ? m_bad : m_ok;
+    if (!(b - a > 2.0 * eps)) return;
+    const double k1 = 0.2 / (b - a);  // the method's kappa_1; kappa_2 = 2, n_0 = 1
+    const int n_max = static_cast<int>(std::ceil(std::log2((b - a) / (2.0 * eps)))) + 1;
+    for (int j = 0; j < n_max && b - a > 2.0 * eps; ++j) {
+        const double half = 0.5 * (a + b);
+        const double r = eps * std::ldexp(1.0, n_max - j) - 0.5 * (b - a);
+        const double delta = std::max(k1 * (b - a) * (b - a), eps);  // past a flip found to rounding
+        double falsi = half;
+        if ((ya >= 0.0) != (yb >= 0.0)) falsi = (yb * a - ya * b) / (yb - ya);
+        if (!std::isfinite(falsi)) falsi = half;
+        const double sigma = half >= falsi ? 1.0 : -1.0;
+        const double truncated = delta <= std::abs(half - falsi) ? falsi + sigma * delta : half;
+        double x = std::abs(truncated - half) <= r ? truncated : half - sigma * r;
+        if (!(x > a && x < b)) x = half;
+        if (!(x > a && x < b)) break;  // a and b adjacent doubles
+        const Probe p = probe(x);
+        if (p.ok == ok_low) a = x, ya = p.margin;
+        else b = x, yb = p.margin;
+    }
+    x_ok = ok_low ? a : b;
+    x_bad = ok_low ? b : a;
+}
+
+// Half the bisection's resolution near a flip between l and h (>= 0): at most a factor 2 finer
+// than needed where the flip is above the middle (a replayed halving tests what this leaves).
+inline double flip_eps(double l, double h) {
+    const double small = std::min(std::abs(l), std::abs(h)), large = std::max(std::abs(l), std::abs(h));
+    return 0.5 * resolution * std::max(small, 0.5 * large);
+}
+
+// Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
+// `test` returns bool (bisection) or Probe (guided, the same answer where the test is monotone).
+template <class F>
+double highest(F&& test, double lo, double hi) {
+    constexpr bool guided = std::is_same_v<std::invoke_result_t<F&, double>, Probe>;
+    auto ok = [&](double x) {
+        if constexpr (guided) return test(x).ok;
+        else return test(x);
+    };
+    if (!(hi > lo)) return lo;
+    auto bisect = [&](double l, double h) {
+        for (int i = 0; i < bisection_steps && h - l > resolution * h; ++i) {
+            const double mid = 0.5 * (l + h);
+            (ok(mid) ? l : h) = mid;
+        }
+        return l;
+    };
+    if constexpr (!guided) {
+        if (test(hi)) return hi;
+        return bisect(lo, hi);
+    } else {
+        const Probe top = test(hi);
+        if (top.ok) return hi;
+        // The bisection itself up to its first passing point (lo is never tested)...
+        double l = lo, h = hi, m_l = 0.0, m_h = top.margin;
+        int i = 0;
+        bool found = false;
+        for (; i < bisection_steps && h - l > resolution * h && !found; ++i) {
+            const double mid = 0.5 * (l + h);
+            const Probe p = test(mid);
+            if (p.ok) l = mid, m_l = p.margin, found = true;
+            else h = mid, m_h = p.margin;
+        }
+        if (!found) return l;
+        // ... then the flip found by regula falsi, and the rest of the bisection replayed on it.
+        double x_ok = l, x_bad = h;
+        narrow(test, x_ok, m_l, x_bad, m_h, flip_eps(l, h));
+        bool tested = true;  // l passed a test (not inferred)
+        for (; i < bisection_steps && h - l > resolution * h; ++i) {
+            const double mid = 0.5 * (l + h);
+            bool pass = false, known = true;
+            if (mid <= x_ok) pass = true, known = false;
+            else if (mid >= x_bad) pass = false;
+            else if ((pass = ok(mid))) x_ok = mid;
+            else x_bad = mid;
+            if (pass) l = mid, tested = known;
+            else h = mid;
+        }
+        if (tested || ok(l)) return l;
+        return bisect(lo, hi);
+    }
+}
+
+// Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
+template <class F>
+double lowest(F&& test, double lo, double hi) {
+    constexpr bool guided = std::is_same_v<std::invoke_result_t<F&, double>, Probe>;
+    auto ok = [&](double x) {
+        if constexpr (guided) return test(x).ok;
+        else return test(x);
+    };
+    if (!(hi > lo)) return hi;
+    auto bisect = [&](double l, double h) {
+        for (int i = 0; i < bisection_steps && h - l > resolution * h; ++i) {
+            const double mid = 0.5 * (l + h);
+            (ok(mid) ? h : l) = mid;
+        }
+        return h;
+    };
+    if constexpr (!guided) {
+        if (test(lo)) return lo;
+        return bisect(lo, hi);
+    } else {
+        const Probe bottom = test(lo);
+        if (bottom.ok) return lo;
+        // The bisection itself up to its first passing point (hi is never tested)...
+        double l = lo, h = hi, m_l = bottom.margin, m_h = 0.0;
+        int i = 0;
+        bool found = false;
+        for (; i < bisection_steps && h - l > resolution * h && !found; ++i) {
+            const double mid = 0.5 * (l + h);
+            const Probe p = test(mid);
+            if (p.ok) h = mid, m_h = p.margin, found = true;
+            else l = mid, m_l = p.margin;
+        }
+        if (!found) return h;
+        // ... then the flip found by regula falsi, and the rest of the bisection replayed on it.
+        double x_ok = h, x_bad = l;
+        narrow(test, x_ok, m_h, x_bad, m_l, flip_eps(l, h));
+        bool tested = true;  // h passed a test (not inferred)
+        for (; i < bisection_steps && h - l > resolution * h; ++i) {
+            const double mid = 0.5 * (l + h);
+            bool pass = false, known = true;
+            if (mid >= x_ok) pass = true, known = false;
+            else if (mid <= x_bad) pass = false;
+            else if ((pass = ok(mid))) x_ok = mid;
+            else x_bad = mid;
+            if (pass) h = mid, tested = known;
+            else l = mid;
+        }
+        if (tested || ok(h)) return h;
+        return bisect(lo, hi);
+    }
+}
+
+}  // namespace firtp::search

@@ -1,0 +1,86 @@
+// The guided searches (search.hpp) against the plain bisection they replay: bit for bit the same
+// answer for monotone tests, far fewer tests, and a passing answer where the test is not monotone.
+#include <firtp/search.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace firtp;
+
+namespace {
+
+// A block-like test: the length a speed v needs, v (c + k v) (+ a jump where a ramp appears),
+// against the length available; passes while the margin is >= 0.
+struct BlockTest {
+    double length = 10.0, c = 0.05, k = 1e-4, jump_at = 1e300, jump = 0.0;
+    int* count = nullptr;
+    double margin(double v) const { return length - v * (c + k * v) - (v > jump_at ? jump : 0.0); }
+    search::Probe operator()(double v) const {
+        if (count != nullptr) ++*count;
+        const double m = margin(v);
+        return {m >= 0.0, m};
+    }
+};
+
+TEST(Search, GuidedHighestIsTheBisectionsAnswer) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long guided_tests = 0, plain_tests = 0;
+    for (int n = 0; n < 20000; ++n) {
+        BlockTest t;
+        t.length = 0.1 + 40.0 * unit(rng);
+        t.c = 0.001 + 0.1 * unit(rng);
+        t.k = 1e-5 + 1e-3 * unit(rng);
+        if (n % 3 == 1) t.jump_at = 300.0 * unit(rng), t.jump = 5.0 * unit(rng);  // the flip may sit on it
+        const double lo = n % 5 == 0 ? 0.0 : 50.0 * unit(rng), hi = lo + 300.0 * unit(rng);
+        int guided = 0, plain = 0;
+        BlockTest g = t, p = t;
+        g.count = &guided, p.count = &plain;
+        const double a = search::highest(g, lo, hi);
+        const double b = search::highest([&](double v) { return p(v).ok; }, lo, hi);
+        ASSERT_EQ(a, b) << "case " << n;
+        // Counted, not timed. Where the margin jumps at the flip the guide cannot help: ITP, the
+        // replay and the last test then cost a few tests more than bisection.
+        ASSERT_LE(guided, plain + 8) << "case " << n;
+        if (n % 3 != 1 && b > lo && b < hi) guided_tests += guided, plain_tests += plain;
+    }
+    EXPECT_LT(guided_tests * 3, plain_tests);  // the guide pays: about 4 times fewer tests
+}
+
+TEST(Search, GuidedLowestIsTheBisectionsAnswer) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long guided_tests = 0, plain_tests = 0;
+    for (int n = 0; n < 20000; ++n) {
+        // Passes from a threshold on: the margin grows with v.
+        const double root = 300.0 * unit(rng), slope = 0.01 + unit(rng), curve = 1e-3 * unit(rng);
+        const bool jumps = n % 3 == 1;
+        int guided = 0, plain = 0;
+        auto test = [&](double v, int& count) {
+            ++count;
+            const double m = (v - root) * (slope + curve * v) + (jumps && v > root ? 1.0 : 0.0);
+            return search::Probe{m >= 0.0, m};
+        };
+        const double lo = 300.0 * unit(rng) * unit(rng), hi = lo + 300.0 * unit(rng);
+        const double a = search::lowest([&](double v) { return test(v, guided); }, lo, hi);
+        const double b = search::lowest([&](double v) { return test(v, plain).ok; }, lo, hi);
+        ASSERT_EQ(a, b) << "case " << n;
+        ASSERT_LE(guided, plain + 8) << "case " << n;
+        if (!jumps && b > lo && b < hi) guided_tests += guided, plain_tests += plain;
+    }
+    EXPECT_LT(guided_tests * 3, plain_tests);
+}
+
+// Not monotone: passes on [0, 100] and again on [150, 151]; the margin points at 150.5. The answer
+// need not be the bisection's, but it passes.
+TEST(Search, NotMonotoneStillPasses) {
+    auto margin = [](double v) { return v <= 100.0 ? 100.0 - v : std::abs(v - 150.5) <= 0.5 ? 0.5 - std::abs(v - 150.5) : -1.0; };
+    for (double hi : {160.0, 170.0, 200.0, 151.2, 300.0}) {
+        const double v = search::highest([&](double x) { return search::Probe{margin(x) >= 0.0, margin(x)}; }, 0.0, hi);
+        EXPECT_GE(margin(v), 0.0) << hi;
+    }
+}
+
+}  // namespace
