@@ -1,7 +1,7 @@
 // Offline planning in constant memory, and the cost of planning one block.
 //
-//   firtp_plan_stream --generate spiral|random [--blocks 1000000] [--seed 1] [--ini FILE] [--json]
-//                     [--max-growth-kib K]
+//   firtp_plan_stream --generate spiral|random|corners [--blocks 1000000] [--seed 1] [--ini FILE] [--json]
+//                     [--max-growth-kib K] [--slowest N]
 //   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json]
 //
 // Plans and samples block by block through the Planner as the servo thread would
@@ -11,7 +11,8 @@
 //           G64 P0.05 (a long CAM-like chorded curve; at R 60 the filters' radial shrink
 //           F^2 sum(T^2) / (24 R) already allows the full feed within the tolerance);
 //   random  random short chords of 0.1-2 mm turning up to 90 degrees each, 100-300 mm/s,
-//           0.01-0.05 mm tolerances, X Y Z.
+//           0.01-0.05 mm tolerances, X Y Z;
+//   corners random corners 2-40 mm apart, 100-300 mm/s, 0.05 mm (firtp_bench's BM_PlanBlock).
 // Machine: the built-in one (X Y Z, 300 mm/s, 5000 mm/s^2, 10^5 mm/s^3, 1 ms, T 60/50 ms) or --ini.
 //
 // Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
@@ -28,15 +29,18 @@
 #include <firtp/machine.hpp>
 #include <firtp/planner.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace firtp;
 using namespace firtp::bench;
@@ -95,6 +99,31 @@ private:
     std::int64_t line_ = 0;
 };
 
+// firtp_bench's BM_PlanBlock blocks: corners 2-40 mm apart in X Y Z, 100-300 mm/s, 0.05 mm.
+class CornerSource : public Source {
+public:
+    CornerSource(long long blocks, std::uint64_t seed) : left_(blocks), rng_(seed) {}
+    std::optional<Block> next() override {
+        if (left_-- <= 0) return std::nullopt;
+        AxisVector d = AxisVector::Zero();
+        for (int a = 0; a < 3; ++a) d[a] = unit_(rng_);
+        at_ += d.normalized() * length_(rng_);
+        Block b;
+        b.target = at_;
+        b.feed = feed_(rng_);
+        b.tolerance = 0.05;
+        b.line = ++line_;
+        return b;
+    }
+
+private:
+    long long left_;
+    std::mt19937_64 rng_;
+    std::uniform_real_distribution<double> unit_{-1.0, 1.0}, length_{2.0, 40.0}, feed_{100.0, 300.0};
+    AxisVector at_ = AxisVector::Zero();
+    std::int64_t line_ = 0;
+};
+
 class RandomChordSource : public Source {
 public:
     RandomChordSource(long long blocks, std::uint64_t seed) : left_(blocks), rng_(seed) {
@@ -132,8 +161,8 @@ private:
 
 int usage(const char* self) {
     std::fprintf(stderr,
-                 "usage: %s (--generate spiral|random [--blocks N] [--seed S] | --program FILE.ngc) [--ini FILE] "
-                 "[--json] [--max-growth-kib K]\n",
+                 "usage: %s (--generate spiral|random|corners [--blocks N] [--seed S] | --program FILE.ngc) [--ini FILE] "
+                 "[--json] [--max-growth-kib K] [--slowest N]\n",
                  self);
     return 2;
 }
@@ -146,6 +175,7 @@ int main(int argc, char** argv) try {
     std::uint64_t seed = 1;
     bool json = false;
     long max_growth_kib = -1;
+    std::size_t slowest_count = 0;  // --slowest: the adds with the most CPU time, by line
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--json")) json = true;
@@ -155,6 +185,7 @@ int main(int argc, char** argv) try {
         else if (!std::strcmp(argv[i], "--blocks") && has_value) blocks = std::atoll(argv[++i]);
         else if (!std::strcmp(argv[i], "--seed") && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
         else if (!std::strcmp(argv[i], "--max-growth-kib") && has_value) max_growth_kib = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--slowest") && has_value) slowest_count = std::atoi(argv[++i]);
         else return usage(argv[0]);
     }
     if (generate.empty() == program_file.empty()) return usage(argv[0]);
@@ -174,6 +205,9 @@ int main(int argc, char** argv) try {
         source = std::make_unique<SpiralSource>(blocks, seed);
         start = SpiralSource::start();
         what = "spiral";
+    } else if (generate == "corners") {
+        source = std::make_unique<CornerSource>(blocks, seed);
+        what = "corners";
     } else if (generate == "random") {
         source = std::make_unique<RandomChordSource>(blocks, seed);
         what = "random";
@@ -193,6 +227,8 @@ int main(int argc, char** argv) try {
     const long long warm_after = blocks > 0 ? std::max<long long>(blocks / 10, 1) : 0;
     AxisVector last_end = start, goal = start;
     std::optional<Block> pending = source->next();
+    std::vector<std::pair<std::int64_t, std::int64_t>> slowest;  // (CPU ns, line), a min-heap
+    slowest.reserve(slowest_count + 1);
 
     const std::int64_t cpu_begin = thread_cpu_ns(), wall_begin = wall_ns();
     PlannerInput input;
@@ -212,6 +248,12 @@ int main(int argc, char** argv) try {
             }
             add_cpu.add(c1 - c0);
             add_wall.add(w1 - w0);
+            slowest.emplace_back(c1 - c0, pending->line);  // the N slowest on the CPU clock
+            std::push_heap(slowest.begin(), slowest.end(), std::greater<>());
+            if (slowest.size() > slowest_count) {
+                std::pop_heap(slowest.begin(), slowest.end(), std::greater<>());
+                slowest.pop_back();
+            }
             if (result == Result::ok) {  // not skipped (zero length)
                 tv_sum += (pending->target - last_end).norm() / pending->feed;
                 last_end = pending->target;
@@ -267,6 +309,8 @@ int main(int argc, char** argv) try {
         std::printf("  planner.add, wall clock:       mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us (maxima include preemption)\n",
                     add_wall.mean() * 1e-3, static_cast<double>(add_wall.quantile(0.5)) * 1e-3,
                     static_cast<double>(add_wall.quantile(0.99)) * 1e-3, static_cast<double>(add_wall.max()) * 1e-3);
+        std::sort(slowest.begin(), slowest.end(), std::greater<>());
+        for (const auto& [ns, line] : slowest) std::printf("  slow add: line %lld, %.1f us CPU\n", static_cast<long long>(line), static_cast<double>(ns) * 1e-3);
         std::printf("  cycle time %.4f s (%s %.4f s)\n", cycle_time, parameters.fixed_chain ? "closed form" : "at the feeds",
                     closed_form);
         std::printf("  max path speed %.1f, axis v %.1f, a %.0f, j %.0f\n", max_speed, max_v, max_a, max_j);

@@ -430,24 +430,36 @@ Lookahead::DenseJunction Lookahead::dense_junction(std::size_t i) const {
     return j;
 }
 
-bool Lookahead::dense_ok(const DenseJunction& j, double b, double a) const {
+Probe Lookahead::dense_probe(const DenseJunction& j, double b, double a) const {
     const std::size_t i = j.i;
     const Segment& s = *j.s;
     const Segment& n = *j.n;
-    if (std::max(a, b) > s.learned_cap) return false;
+    // The margin: the least relative slack of the conditions tested (a search's guide only).
+    double margin = 1.0;
+    auto slack = [&margin](double room, double need) {
+        if (std::isfinite(room) && std::isfinite(need))
+            margin = std::min(margin, (room - need) / std::max({std::abs(room), std::abs(need), 1e-300}));
+    };
+    slack(s.learned_cap, std::max(a, b));
+    if (std::max(a, b) > s.learned_cap) return {false, margin};
     const AxisVector dv = a * n.u - b * s.u;
     const double t1 = box(dv, s.junction);
     const double leg_s = b > 0.0 ? j.length / b : infinity, leg_n = a > 0.0 ? n.length / a : infinity;
-    if (t1 > leg_s || t1 > leg_n) return false;
+    slack(leg_s, t1), slack(leg_n, t1);
+    if (t1 > leg_s || t1 > leg_n) return {false, margin};
     // Kernels start in the steps' order: a step wider than the one entering the block waits.
     const double entry_width = j.width_fixed ? j.width_add
                                : j.dense_before != nullptr
                                    ? box(b * s.u - j.dense_before->b * j.dense_before->u, j.dense_before->junction) + j.width_add
                                    : b * j.width_scale + j.width_add;
-    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width)) return false;
+    slack(leg_s, 0.5 * (t1 + s.junction.t2 - entry_width));
+    if (leg_s < 0.5 * (t1 + s.junction.t2 - entry_width)) return {false, margin};
     // ... and not before now (a hold brakes in the block under way).
-    if (i == 0 && frozen_.moving && frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return false;
-    if (!j.bounded) return true;
+    if (i == 0 && frozen_.moving) {
+        slack(frozen_centre() + leg_s, 0.5 * (t1 + s.junction.t2));
+        if (frozen_centre() + leg_s < 0.5 * (t1 + s.junction.t2)) return {false, margin};
+    }
+    if (!j.bounded) return {true, margin};
     const AxisVector& m = j.m;
     const double inward = (dv - m * dv.dot(m)).norm();
     const double t2 = s.junction.t2;
@@ -455,12 +467,13 @@ bool Lookahead::dense_ok(const DenseJunction& j, double b, double a) const {
     const double legs = 0.5 * (std::isfinite(leg_s) ? leg_s : 0.0) + 0.5 * (std::isfinite(leg_n) ? leg_n : 0.0);
     if (legs > 0.0) estimate += inward / legs * t2 * t2 / 24.0;
     estimate += chord_margin(t1 > 0.0 ? dv.norm() / std::max(t1, t2) : 0.0, jerk_norm_, parameters_.period);
-    return estimate <= j.epsilon;
+    slack(j.epsilon, estimate);
+    return {estimate <= j.epsilon, margin};
 }
 
 double Lookahead::dense_exit_max(std::size_t i, double next_entry_max) const {
     const DenseJunction j = dense_junction(i);
-    return highest([&](double b) { return dense_ok(j, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
+    return highest([&](double b) { return dense_probe(j, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
 }
 
 double Lookahead::max_entry(std::size_t i, double exit_max) const {
@@ -533,13 +546,14 @@ double Lookahead::entry_for(std::size_t i) const {
     const Segment& s = seg(i);
     const double b = prev.b;
     const DenseJunction j = dense_junction(i - 1);
-    auto ok = [&](double a) { return dense_ok(j, b, a); };
+    auto probe = [&](double a) { return dense_probe(j, b, a); };
+    auto ok = [&](double a) { return probe(a).ok; };
     const double hi = std::min(s.brake ? 0.0 : target(i), s.entry_max), lo = std::min(b, s.entry_max);
-    if (hi >= lo) return ok(lo) ? highest(ok, lo, hi) : lo;
-    const double v = lowest(ok, hi, lo);
+    if (hi >= lo) return ok(lo) ? highest(probe, lo, hi) : lo;
+    const double v = lowest(probe, hi, lo);
     // A hold brakes as hard as the junction allows: where even its bound's speed does not pass,
     // the stop falls in a later block (place_hold_stop goes on) rather than past a limit.
-    if (s.brake && !ok(v) && b > v && ok(b)) return lowest(ok, v, b);
+    if (s.brake && !ok(v) && b > v && ok(b)) return lowest(probe, v, b);
     return v;
 }
 

@@ -214,7 +214,7 @@ private:
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
     double max_entry(std::size_t i, double exit_max) const;
-    // What dense_ok needs of junction i that does not depend on the speeds (found once a search).
+    // What dense_probe needs of junction i that does not depend on the speeds (found once a search).
     struct DenseJunction {
         std::size_t i = 0;
         const Segment* s = nullptr;
@@ -230,7 +230,8 @@ private:
         double width_scale = 0.0, width_add = 0.0;
     };
     DenseJunction dense_junction(std::size_t i) const;
-    bool dense_ok(const DenseJunction& j, double b, double a) const;  // the dense junction after j.i
+    // Whether the dense junction after j.i passes at speeds b before it and a after it.
+    search::Probe dense_probe(const DenseJunction& j, double b, double a) const;
     double dense_exit_max(std::size_t i, double next_entry_max) const;
     ProfileInput profile_input(std::size_t i, double a, double b) const;
     bool fits(std::size_t i, double a, double p, double b) const;
