@@ -73,6 +73,35 @@ TEST(Search, GuidedLowestIsTheBisectionsAnswer) {
     EXPECT_LT(guided_tests * 3, plain_tests);
 }
 
+// The paper's Tk search: 12 halvings from a passing lo (hi not tested), as PaperPlanner::search.
+TEST(Search, GuidedHalvingsAreTheHalvingsAnswer) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long guided_tests = 0, plain_tests = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double hi = 0.05 + 0.3 * unit(rng), flip = hi * (1.2 * unit(rng) - 0.1), slope = 0.5 + unit(rng);
+        const bool jumps = n % 4 == 1;
+        int guided = 0, plain = 0;
+        auto test = [&](double tk, int& count) {
+            ++count;
+            const double m = (flip - tk) * (slope + tk) - (jumps && tk > flip ? 1.0 : 0.0);
+            return search::Probe{m >= 0.0, m};
+        };
+        const double lo = 0.0, m_lo = test(lo, guided).margin;
+        if (!(m_lo >= 0.0)) continue;  // lo must pass
+        const double a = search::halvings([&](double tk) { return test(tk, guided); }, lo, m_lo, hi, 12);
+        double l = lo, h = hi;
+        for (int i = 0; i < 12; ++i) {
+            const double mid = 0.5 * (l + h);
+            (test(mid, plain).ok ? l : h) = mid;
+        }
+        ASSERT_EQ(a, l) << "case " << n;
+        ASSERT_LE(guided, plain + 1 + 8) << "case " << n;  // + the test of lo
+        if (!jumps && flip > lo && flip < hi) guided_tests += guided - 1, plain_tests += plain;
+    }
+    EXPECT_LT(guided_tests * 4, plain_tests * 3);  // 12 halvings leave less to save: about a quarter
+}
+
 // Not monotone: passes on [0, 100] and again on [150, 151]; the margin points at 150.5. The answer
 // need not be the bisection's, but it passes.
 TEST(Search, NotMonotoneStillPasses) {

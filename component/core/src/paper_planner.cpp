@@ -117,7 +117,7 @@ void PaperPlanner::to_timed(const Leg& leg, TimedLeg& out) const {
     out.falling = leg.falling;
 }
 
-bool PaperPlanner::feasible(const Leg& leg, const AxisVector& corner_point, double corner_epsilon, bool corner_bound) {
+search::Probe PaperPlanner::feasible(const Leg& leg, double corner_epsilon, bool corner_bound) {
     const double td = chain_->delay();
     // The legs that can overlap the candidate, oldest first, and the candidate last.
     TimedLeg c;
@@ -139,35 +139,38 @@ bool PaperPlanner::feasible(const Leg& leg, const AxisVector& corner_point, doub
     const std::uint64_t first_leg = pushed_ - (timeline_->size() - first);  // count of legs_[0]
     if (check_limits_) {
         const LimitCheck l = sweep_.check(legs_, std::max(c.rise, 0.0), c.finish(), limits_, parameters_.period);
-        if (!l.ok) return false;
+        if (!l.ok) return {false, -1.0};
     }
+    double margin = 1.0;
     auto approach_ok = [&](std::size_t leg_index, double guess, double epsilon) {
-        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the window
-            return contour_error(legs_, leg_index, guess, td, parameters_.period) <= epsilon * (1.0 - error_margin);
-        }
-        // The clock is scaled by the override and leaves the sample grid: every phase of it.
-        const Approach a = closest_approach(legs_, leg_index, guess, parameters_.period, clock_phases);
-        return a.distance <= epsilon * (1.0 - error_margin);
+        const double limit = epsilon * (1.0 - error_margin);
+        // The contour: the samples across the window. The corner: the clock is scaled by the
+        // override and leaves the sample grid, so every phase of it.
+        const double error = parameters_.tolerance_meaning == ToleranceMeaning::contour
+                                 ? contour_error(legs_, leg_index, guess, td, parameters_.period)
+                                 : closest_approach(legs_, leg_index, guess, parameters_.period, clock_phases).distance;
+        if (limit > 0.0) margin = std::min(margin, (limit - error) / limit);
+        return error <= limit;
     };
     // The corner this candidate forms, and earlier ones its rising kernel still reaches.
     if (corner_bound && legs_.size() >= 2 && std::isfinite(corner_epsilon)) {
         const double guess = 0.5 * (c.rise + (legs_[legs_.size() - 2].rise + legs_[legs_.size() - 2].fall + td));
-        if (!approach_ok(legs_.size() - 2, guess, corner_epsilon)) return false;
-        (void)corner_point;
+        if (!approach_ok(legs_.size() - 2, guess, corner_epsilon)) return {false, margin};
     }
     const double now = static_cast<double>(timeline_->now()) * parameters_.period;
     for (std::size_t k = 0; k < corner_count_; ++k) {
         const Corner& corner = corners_[k];
         if (corner.window_end - now <= c.rise || corner.leg < first_leg) continue;
-        if (!approach_ok(static_cast<std::size_t>(corner.leg - first_leg), corner.guess - now, corner.epsilon)) return false;
+        if (!approach_ok(static_cast<std::size_t>(corner.leg - first_leg), corner.guess - now, corner.epsilon))
+            return {false, margin};
     }
-    return true;
+    return {true, margin};
 }
 
 std::optional<double> PaperPlanner::feed_for_start(const AxisVector& delta, double length, double feed,
                                                    const Start& start, const Block& block) {
     return highest_feasible_feed(
-        [&](double f) { return feasible(candidate(delta, length, f, start, block), AxisVector::Zero(), 0.0, false); },
+        [&](double f) { return feasible(candidate(delta, length, f, start, block), 0.0, false).ok; },
         feed, 14, length / longest_pulse(parameters_.period));
 }
 
@@ -180,9 +183,10 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
     const std::int64_t now = timeline_->now();
     const double Tk_high = latest_overlap(now);
     const double slowest = length / longest_pulse(parameters_.period);
-    auto ok = [&](double Tk, double f) {
-        return feasible(candidate(delta, length, f, schedule(Tk, now, Tk == 0.0), block), last_.end, epsilon, true);
+    auto probe = [&](double Tk, double f) {
+        return feasible(candidate(delta, length, f, schedule(Tk, now, Tk == 0.0), block), epsilon, true);
     };
+    auto ok = [&](double Tk, double f) { return probe(Tk, f).ok; };
     constexpr int steps = 14;
     const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, Tk_high);
     if ((estimate >= Tk_high || beta < shallow) && ok(Tk_high, feed)) return Choice{Tk_high, feed};
@@ -192,12 +196,14 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
     }
     // Bracket below the estimate, then bisect.
     double lo = 0.0, hi = Tk_high;
+    search::Probe at_lo;
     if (estimate > 0.0) {
-        if (estimate < Tk_high && ok(estimate, feed)) lo = estimate;
-        else if (hi = std::min(hi, estimate), ok(estimate * (15.0 / 16.0), feed)) lo = estimate * (15.0 / 16.0);
+        if (estimate < Tk_high && (at_lo = probe(estimate, feed)).ok) lo = estimate;
+        else if (hi = std::min(hi, estimate), (at_lo = probe(estimate * (15.0 / 16.0), feed)).ok) lo = estimate * (15.0 / 16.0);
     }
-    if (lo > 0.0 || ok(0.0, feed)) {
-        for (int i = 0; i < 12; ++i) (ok(0.5 * (lo + hi), feed) ? lo : hi) = 0.5 * (lo + hi);
+    if (lo > 0.0 || (at_lo = probe(0.0, feed)).ok) {
+        // 12 halvings (to Td / 4096 at most), guided by the corners' slack (search.hpp).
+        lo = search::halvings([&](double Tk) { return probe(Tk, feed); }, lo, at_lo.margin, hi, 12);
         return Choice{lo, feed};
     }
     // Even a stop breaks a limit: the block itself is too fast for the filters (short T).

@@ -17,6 +17,7 @@
 #include <firtp/motion_check.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/report.hpp>
+#include <firtp/search.hpp>
 #include <firtp/timeline.hpp>
 #include <firtp/types.hpp>
 
@@ -77,8 +78,9 @@ private:
     Start schedule(double Tk, std::int64_t now, bool rest = false, double dwell = 0.0) const;
     double latest_overlap(std::int64_t now) const;
     Leg candidate(const AxisVector& delta, double length, double feed, const Start& start, const Block& block) const;
-    // True when the candidate keeps the limits and every corner it can move (with nothing after it).
-    bool feasible(const Leg& leg, const AxisVector& corner_point, double corner_epsilon, bool corner_bound);
+    // Passes when the candidate keeps the limits and every corner it can move (with nothing after
+    // it); its margin is the least relative slack of those corners (-1 where a limit breaks).
+    search::Probe feasible(const Leg& leg, double corner_epsilon, bool corner_bound);
     std::optional<Choice> search(const AxisVector& delta, double length, double feed, double beta, double epsilon,
                                  const Block& block);
     std::optional<double> feed_for_start(const AxisVector& delta, double length, double feed, const Start& start,

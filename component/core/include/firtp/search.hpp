@@ -168,4 +168,44 @@ double lowest(F&& test, double lo, double hi) {
     }
 }
 
+// `steps` halvings of [lo, hi] keeping the passing half, from lo that passed (margin m_lo; hi not
+// tested): where they end, lo if no point passes. Guided as highest(): the halvings up to the first
+// failing point, then ITP between the last two, then the rest replayed on that bracket.
+template <class F>
+double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
+    auto plain = [&] {
+        double l = lo, h = hi;
+        for (int i = 0; i < steps; ++i) {
+            const double mid = 0.5 * (l + h);
+            (test(mid).ok ? l : h) = mid;
+        }
+        return l;
+    };
+    double l = lo, h = hi, m_h = 0.0;
+    int i = 0;
+    bool failed = false;
+    for (; i < steps && !failed; ++i) {
+        const double mid = 0.5 * (l + h);
+        const Probe p = test(mid);
+        if (p.ok) l = mid, m_lo = p.margin;
+        else h = mid, m_h = p.margin, failed = true;
+    }
+    if (!failed) return l;
+    double x_ok = l, x_bad = h;
+    narrow(test, x_ok, m_lo, x_bad, m_h, 0.25 * std::ldexp(hi - lo, -steps));
+    bool tested = true;  // l passed a test (not inferred)
+    for (; i < steps; ++i) {
+        const double mid = 0.5 * (l + h);
+        bool pass = false, known = true;
+        if (mid <= x_ok) pass = true, known = false;
+        else if (mid >= x_bad) pass = false;
+        else if ((pass = test(mid).ok)) x_ok = mid;
+        else x_bad = mid;
+        if (pass) l = mid, tested = known;
+        else h = mid;
+    }
+    if (tested || test(l).ok) return l;
+    return plain();
+}
+
 }  // namespace firtp::search
