@@ -63,109 +63,74 @@ inline double flip_eps(double l, double h) {
     return 0.5 * resolution * std::max(small, 0.5 * large);
 }
 
-// Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
-// `test` returns bool (bisection) or Probe (guided, the same answer where the test is monotone).
-template <class F>
-double highest(F&& test, double lo, double hi) {
+// Where ok flips in [lo, hi]. Up: ok true up to the flip, false beyond; the largest x that passes
+// (lo if none). Not Up: ok false up to it, true beyond; the smallest (hi if none). `test` returns
+// bool (bisection) or Probe (guided, the same answer where the test is monotone).
+template <bool Up, class F>
+double flip(F&& test, double lo, double hi) {
     constexpr bool guided = std::is_same_v<std::invoke_result_t<F&, double>, Probe>;
     auto ok = [&](double x) {
         if constexpr (guided) return test(x).ok;
         else return test(x);
     };
-    if (!(hi > lo)) return lo;
+    // The end first tested, the one halving keeps on a pass (the answer), the other.
+    auto kept = [](double& l, double& h) -> double& { return Up ? l : h; };
+    auto other = [](double& l, double& h) -> double& { return Up ? h : l; };
+    if (!(hi > lo)) return Up ? lo : hi;
     auto bisect = [&](double l, double h) {
         for (int i = 0; i < bisection_steps && h - l > resolution * h; ++i) {
             const double mid = 0.5 * (l + h);
-            (ok(mid) ? l : h) = mid;
+            (ok(mid) ? kept(l, h) : other(l, h)) = mid;
         }
-        return l;
+        return kept(l, h);
     };
+    const double end = Up ? hi : lo;
     if constexpr (!guided) {
-        if (test(hi)) return hi;
+        if (test(end)) return end;
         return bisect(lo, hi);
     } else {
-        const Probe top = test(hi);
-        if (top.ok) return hi;
-        // The bisection itself up to its first passing point (lo is never tested)...
-        double l = lo, h = hi, m_l = 0.0, m_h = top.margin;
+        const Probe first = test(end);
+        if (first.ok) return end;
+        // The bisection itself up to its first passing point (the other end is never tested)...
+        double l = lo, h = hi, m_ok = 0.0, m_bad = first.margin;
         int i = 0;
         bool found = false;
         for (; i < bisection_steps && h - l > resolution * h && !found; ++i) {
             const double mid = 0.5 * (l + h);
             const Probe p = test(mid);
-            if (p.ok) l = mid, m_l = p.margin, found = true;
-            else h = mid, m_h = p.margin;
+            if (p.ok) kept(l, h) = mid, m_ok = p.margin, found = true;
+            else other(l, h) = mid, m_bad = p.margin;
         }
-        if (!found) return l;
+        if (!found) return kept(l, h);
         // ... then the flip found by regula falsi, and the rest of the bisection replayed on it.
-        double x_ok = l, x_bad = h;
-        narrow(test, x_ok, m_l, x_bad, m_h, flip_eps(l, h));
-        bool tested = true;  // l passed a test (not inferred)
+        double x_ok = kept(l, h), x_bad = other(l, h);
+        narrow(test, x_ok, m_ok, x_bad, m_bad, flip_eps(l, h));
+        bool tested = true;  // the answer so far passed a test (not inferred)
         for (; i < bisection_steps && h - l > resolution * h; ++i) {
             const double mid = 0.5 * (l + h);
             bool pass = false, known = true;
-            if (mid <= x_ok) pass = true, known = false;
-            else if (mid >= x_bad) pass = false;
+            if (Up ? mid <= x_ok : mid >= x_ok) pass = true, known = false;
+            else if (Up ? mid >= x_bad : mid <= x_bad) pass = false;
             else if ((pass = ok(mid))) x_ok = mid;
             else x_bad = mid;
-            if (pass) l = mid, tested = known;
-            else h = mid;
+            if (pass) kept(l, h) = mid, tested = known;
+            else other(l, h) = mid;
         }
-        if (tested || ok(l)) return l;
+        if (tested || ok(kept(l, h))) return kept(l, h);
         return bisect(lo, hi);
     }
+}
+
+// Largest x in [lo, hi] with ok(x), for ok true up to some point and false beyond; lo if none.
+template <class F>
+double highest(F&& test, double lo, double hi) {
+    return flip<true>(test, lo, hi);
 }
 
 // Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
 template <class F>
 double lowest(F&& test, double lo, double hi) {
-    constexpr bool guided = std::is_same_v<std::invoke_result_t<F&, double>, Probe>;
-    auto ok = [&](double x) {
-        if constexpr (guided) return test(x).ok;
-        else return test(x);
-    };
-    if (!(hi > lo)) return hi;
-    auto bisect = [&](double l, double h) {
-        for (int i = 0; i < bisection_steps && h - l > resolution * h; ++i) {
-            const double mid = 0.5 * (l + h);
-            (ok(mid) ? h : l) = mid;
-        }
-        return h;
-    };
-    if constexpr (!guided) {
-        if (test(lo)) return lo;
-        return bisect(lo, hi);
-    } else {
-        const Probe bottom = test(lo);
-        if (bottom.ok) return lo;
-        // The bisection itself up to its first passing point (hi is never tested)...
-        double l = lo, h = hi, m_l = bottom.margin, m_h = 0.0;
-        int i = 0;
-        bool found = false;
-        for (; i < bisection_steps && h - l > resolution * h && !found; ++i) {
-            const double mid = 0.5 * (l + h);
-            const Probe p = test(mid);
-            if (p.ok) h = mid, m_h = p.margin, found = true;
-            else l = mid, m_l = p.margin;
-        }
-        if (!found) return h;
-        // ... then the flip found by regula falsi, and the rest of the bisection replayed on it.
-        double x_ok = h, x_bad = l;
-        narrow(test, x_ok, m_h, x_bad, m_l, flip_eps(l, h));
-        bool tested = true;  // h passed a test (not inferred)
-        for (; i < bisection_steps && h - l > resolution * h; ++i) {
-            const double mid = 0.5 * (l + h);
-            bool pass = false, known = true;
-            if (mid >= x_ok) pass = true, known = false;
-            else if (mid <= x_bad) pass = false;
-            else if ((pass = ok(mid))) x_ok = mid;
-            else x_bad = mid;
-            if (pass) h = mid, tested = known;
-            else l = mid;
-        }
-        if (tested || ok(h)) return h;
-        return bisect(lo, hi);
-    }
+    return flip<false>(test, lo, hi);
 }
 
 // `steps` halvings of [lo, hi] keeping the passing half, from lo that passed (margin m_lo; hi not
