@@ -624,6 +624,7 @@ void Lookahead::forward(std::size_t from) {
     const double period = parameters_.period;
     for (std::size_t i = from; i < count_; ++i) {
         plan_segment(i, entry_for(i));
+        seg(i).planned_stop = exit_is_stop(i);
         Segment& s = seg(i);
         if (i == 0) {
             s.enter = frozen_.moving ? static_cast<double>(frozen_.tick) * period + frozen_.offset

@@ -300,7 +300,14 @@ void Lookahead::build_legs(std::size_t first) {
     index_legs(legs_);
 }
 
-bool Lookahead::check(std::size_t first, std::size_t* bad) {
+bool Lookahead::same_motion(const Segment& s, const Segment& before) {
+    return !before.unchecked && s.a == before.a && s.p == before.p && s.b == before.b && s.x0 == before.x0 && s.xp == before.xp &&
+           s.x1 == before.x1 && s.rest == before.rest && s.next_a == before.next_a && s.kind == before.kind &&
+           s.planned_stop == before.planned_stop && s.u == before.u && s.regime.t2 == before.regime.t2 &&
+           s.regime.cap == before.regime.cap && s.junction.t2 == before.junction.t2 && s.junction.cap == before.junction.cap;
+}
+
+bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) {
     // Context: segments before `first` whose kernels may still reach it.
     std::size_t from = first;
     double span = 0.0;
@@ -370,11 +377,12 @@ bool Lookahead::check(std::size_t first, std::size_t* bad) {
         *bad = nearest;
         return false;
     }
-    // Every corner the changed motion can reach. The motion changes from the step entering `first`
-    // on (the legs after it and the junction step before it): nothing moves differently before its
-    // widest kernel starts (2 periods to spare). A corner whose last check looked only before that
-    // passed on this very motion.
-    const double unchanged_until = enter_[first] - 0.5 * width - 2.0 * parameters_.period;
+    // Every corner the changed motion can reach. The motion changes from the step entering
+    // `changed` on (the legs after it and the junction step before it): nothing moves differently
+    // before its widest kernel starts (2 periods to spare). A corner whose last check looked only
+    // before that passed on this very motion.
+    const double unchanged_until =
+        changed < count_ ? enter_[changed] - 0.5 * width - 2.0 * parameters_.period : infinity;
     for (std::size_t i = from; i + 1 < last; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
@@ -421,8 +429,18 @@ void Lookahead::replan(std::size_t first) {
     std::size_t from = first;
     for (int attempt = 0;; ++attempt) {
         forward(from);
+        // The check starts where the motion changed: the backward pass also goes back over blocks
+        // whose speeds it found unchanged (their end-of-path flags flipped), and forward() plans
+        // them again to the same legs, which were checked (a whole queue of 256 blocks re-checked
+        // at one add of examples/polygon360.ngc).
+        std::size_t changed = from;
+        if (attempt == 0 && !held_ && frozen_.moving)  // (at rest the start moves with the clock)
+            while (changed < count_ && same_motion(seg(changed), saved_[changed])) ++changed;
         std::size_t bad = count_;
-        if (check(from, &bad)) break;
+        if (check(from, changed, &bad)) {
+            for (std::size_t i = changed; i < count_; ++i) seg(i).unchecked = false;
+            break;
+        }
         ++stats_.checks_failed;
         if (fallback && (bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
             // No plan after the hold's or the resume's change passes: the accepted one goes on
@@ -453,6 +471,7 @@ void Lookahead::replan(std::size_t first) {
             backward(count_ - 1);
             from = count_ >= 2 ? count_ - 2 : 0;
             forward(from);
+            for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true;
             break;
         }
         // Lower the corner: the error grows about with the square of the speed.

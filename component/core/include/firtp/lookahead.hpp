@@ -126,6 +126,8 @@ private:
         double x0 = 0.0, xp = 0.0, x1 = 0.0;
         double rest = 0.0;         // stop: at rest after the stop step until the next start step
         bool unfit = false;        // no legs at these speeds cover it (fits() is not monotone in the speeds)
+        bool planned_stop = false; // it ended in a stop when it was planned (exit_is_stop then)
+        bool unchecked = false;    // planned by replan's last resort, after no plan passed the check
         double next_a = 0.0;       // the speed after the junction (the next segment's a)
         double predicted_error = 0.0;  // the check's closest approach at the junction
         double checked_reach = std::numeric_limits<double>::infinity();  // how far after the junction (s) its last check looked
@@ -294,7 +296,11 @@ private:
     void pop_front(bool stop);
     void refresh_current_leg();
     void replan(std::size_t first_changed);
-    bool check(std::size_t first, std::size_t* bad);
+    // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
+    // first; count_: nowhere) on; false and *bad: the corner to lower.
+    bool check(std::size_t first, std::size_t changed, std::size_t* bad);
+    // Whether segment s makes the same legs as `before` did (build_legs: speeds, durations, steps).
+    static bool same_motion(const Segment& s, const Segment& before);
     // Hold: brake from the motion under way and split the block where the earliest stop falls.
     void place_hold_stop();
     std::size_t hold_stop_index() const;  // the segment the hold's stop ends; count_ if none
