@@ -4,9 +4,11 @@
 #include <firtp/measure.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 namespace firtp {
 namespace {
@@ -97,7 +99,8 @@ const Segment& MeasureStream::segment(std::size_t k) {
         s.start = point(j);
         s.delta = point(j + 1) - s.start;
         s.length2 = s.delta.squaredNorm();
-        s.unit = s.length2 > 0.0 ? AxisVector(s.delta / std::sqrt(s.length2)) : AxisVector::Zero();
+        s.length = std::sqrt(s.length2);
+        s.unit = s.length2 > 0.0 ? AxisVector(s.delta / s.length) : AxisVector::Zero();
         window_.push_back(s);
     }
     return window_[k - window_base_];
@@ -135,17 +138,27 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
     tracked = k_;
     if (!p.allFinite()) return;  // reported by Measured::finite
     std::size_t k = k_;
-    double d = distance(p, segment(k));
+    // Each segment's distance from p found once for this sample (the scans below overlap).
+    std::array<std::pair<std::size_t, double>, 24> known;
+    std::size_t known_count = 0;
+    auto distance_to = [&](std::size_t j) {
+        for (std::size_t m = 0; m < known_count; ++m)
+            if (known[m].first == j) return known[m].second;
+        const double dj = distance(p, segment(j));
+        if (known_count < known.size()) known[known_count++] = {j, dj};
+        return dj;
+    };
+    double d = distance_to(k);
     const double step = motion.norm() + tie_;  // how far the tool can have gone since the last sample
     const double reach = step + 4.0 * stray_;
     while (k < last_) {
-        const double next = distance(p, segment(k + 1));
+        const double next = distance_to(k + 1);
         // Further segments, as long as the ones skipped are short enough to pass within a step.
         std::size_t jump = 0;
         double after = inf, skipped = 0.0;
         for (std::size_t j = k + 2; j <= last_ && skipped <= reach; ++j) {
-            skipped += std::sqrt(segment(j - 1).length2);
-            if (const double dj = distance(p, segment(j)); dj < after) after = dj, jump = j;
+            skipped += segment(j - 1).length;
+            if (const double dj = distance_to(j); dj < after) after = dj, jump = j;
         }
         if (jump != 0 && after < std::min(d, next) - tie_) {
             k = jump;
@@ -160,7 +173,7 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
     }
     k_ = tracked = k;
     double nearest = inf;
-    for (std::size_t s = k > 0 ? k - 1 : 0; s <= std::min(k + 2, last_); ++s) nearest = std::min(nearest, distance(p, segment(s)));
+    for (std::size_t s = k > 0 ? k - 1 : 0; s <= std::min(k + 2, last_); ++s) nearest = std::min(nearest, distance_to(s));
     stray_ = std::max(stray_, nearest);
     for (; window_base_ + 1 < k && !window_.empty(); ++window_base_) window_.pop_front();
 }

@@ -70,6 +70,7 @@ public:
         AxisVector delta;  // end - start
         AxisVector unit;   // delta / |delta|
         double length2 = 0.0;
+        double length = 0.0;  // sqrt(length2)
     };
 
 private:
