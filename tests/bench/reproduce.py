@@ -218,10 +218,11 @@ def million(r, build, quick, timeout):
               "Generated on the fly, planned and sampled block by block (Planner + Interpolator, queue of 256 "
               "blocks), keeping running maxima only. Built-in machine (X Y Z, 300 mm/s, 5000 mm/s², 10^5 mm/s³, "
               "1 ms, T 60/50 ms). spiral: Archimedean from R 60 mm, 0.5 mm pitch, chords 0.3-0.7 mm, F6000, P0.05. random: "
-              "chords 0.1-2 mm turning up to 90°, 100-300 mm/s, 0.01-0.05 mm. Peak RSS is the process's high-water "
+              "chords 0.1-2 mm turning up to 90°, 100-300 mm/s, 0.01-0.05 mm. corners: firtp_bench's BM_PlanBlock "
+              "blocks, corners 2-40 mm apart, 100-300 mm/s, 0.05 mm. Peak RSS is the process's high-water "
               "mark (VmHWM); \"if kept\" is what plan_trajectory / firtp plan would hold in samples alone.")
     rows, raw = [], {}
-    for kind in ("spiral", "random"):
+    for kind in ("spiral", "random", "corners"):
         cmd = [os.path.join(build, "bin", "firtp_plan_stream"), "--generate", kind, "--blocks", str(blocks),
                "--max-growth-kib", "1024", "--json"]
         try:
