@@ -151,6 +151,7 @@ void FakeComponent::publish_status() {
     status.queue_free = capacity_ - depth();
     status.current_line = queue_.empty() ? 0 : queue_.front().line;
     status.state = state;
+    if (torn_next) status.state = status_t::IDLE, status.queue_depth = 0, torn_next = false;
     status.feed_scale = feed_scale_;
     status.error_code = error_code_;
     status.error_text = error_text_;

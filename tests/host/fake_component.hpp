@@ -39,6 +39,7 @@ public:
     std::optional<Refusal> refuse_always;  // this seq is refused so every time
     int drop_controls = 0;              // control messages lost in transit
     bool silent = false;                // publishes nothing
+    bool torn_next = false;             // the next status reads idle and empty (a bridge's torn read)
     int ticks_per_block = 2;            // execution time of a block
     std::int64_t skip_axis_seq = 0;     // this axis-state seq is never published
     void fail(std::string text);        // state ERROR from the next status on

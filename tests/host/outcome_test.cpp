@@ -40,6 +40,27 @@ TEST_F(OutcomeTest, DoneOnlyOnceEveryBlockHasExecuted) {
     EXPECT_TRUE(host.error().empty());
 }
 
+// firtp-lcm-bridge reads the component's pins one at a time: between two reads the component can
+// take the last blocks from its stream and not yet say so, and one status then reads idle, nothing
+// queued, every block sent. The program is not over until a status of a later period says so too
+// (linuxcnc_bridge.firtp_config_host_diamond: LinuxCNC ended 0.2 s into the 0.8 s diamond).
+TEST_F(OutcomeTest, OneIdleStatusWithBlocksStillQueuedDoesNotEndTheProgram) {
+    FakeComponent component(lcm, 32);
+    component.ticks_per_block = 10;
+    const Program program = line_program(6);
+    Host host(lcm, program, options_for(clock));
+    component.tick();
+    bool torn = false, ended_early = false;
+    const Result result = run_loop(host, component, clock, 100000, [&](int) {
+        if (!torn && host.progress().acknowledged == 6 && component.depth() > 2) component.torn_next = torn = true;
+        if (host.result() != Result::running && component.depth() > 0) ended_early = true;
+    });
+    EXPECT_TRUE(torn);
+    EXPECT_FALSE(ended_early);
+    EXPECT_EQ(result, Result::done);
+    EXPECT_EQ(component.executed, 6);
+}
+
 TEST_F(OutcomeTest, EmptyProgramIsDoneAtOnce) {
     FakeComponent component(lcm);
     const Program program = line_program(0);

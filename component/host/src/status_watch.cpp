@@ -36,7 +36,13 @@ Result StatusWatch::on_status(const status_t& status, bool abort_requested) {
         return fail(status.error_code == status_t::ERROR_NONE ? "component is in the error state"
                                                               : error_text(status));
     const bool ours = status.program == program_;
-    const bool idle_and_empty = status.state == status_t::IDLE && status.queue_depth == 0;
+    bool idle_and_empty = status.state == status_t::IDLE && status.queue_depth == 0;
+    if (!idle_and_empty) {
+        settled_tick_ = -1;
+    } else if (settled_tick_ < 0 || status.tick <= settled_tick_) {
+        if (settled_tick_ < 0) settled_tick_ = status.tick;
+        idle_and_empty = false;  // not yet: seen in one period only
+    }
     if (abort_requested) return idle_and_empty ? Result::aborted : Result::running;
     if (news && !recoverable(status.error_code)) return fail(error_text(status));
     if (ours && status.state == status_t::DISABLED)
