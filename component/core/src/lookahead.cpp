@@ -624,8 +624,8 @@ void Lookahead::forward(std::size_t from) {
     const double period = parameters_.period;
     for (std::size_t i = from; i < count_; ++i) {
         plan_segment(i, entry_for(i));
-        seg(i).planned_stop = exit_is_stop(i);
         Segment& s = seg(i);
+        s.planned_stop = exit_is_stop(i);
         if (i == 0) {
             s.enter = frozen_.moving ? static_cast<double>(frozen_.tick) * period + frozen_.offset
                                      : static_cast<double>(timeline_->now()) * period + next_step().centre;

@@ -299,7 +299,8 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
-    // Whether segment s makes the same legs as `before` did (build_legs: speeds, durations, steps).
+    // Whether segment s makes the same legs as `before` did (build_legs: speeds, durations, steps)
+    // and `before`'s were checked.
     static bool same_motion(const Segment& s, const Segment& before);
     // Hold: brake from the motion under way and split the block where the earliest stop falls.
     void place_hold_stop();

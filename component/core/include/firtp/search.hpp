@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 namespace firtp::search {
@@ -63,6 +64,41 @@ inline double flip_eps(double l, double h) {
     return 0.5 * resolution * std::max(small, 0.5 * large);
 }
 
+// Of a bisection's bracket [l, h]: the end a halving keeps on a pass (Up: l, the answer of
+// highest()), and the other.
+template <bool Up>
+double& kept(double& l, double& h) {
+    return Up ? l : h;
+}
+template <bool Up>
+double& other(double& l, double& h) {
+    return Up ? h : l;
+}
+
+// The rest of a guided bisection. From halving i on, with [l, h] as the halvings left it (the
+// kept end passed with margin m_ok, the other failed with m_bad): the flip narrowed to 2 eps by
+// ITP, then the halvings replayed on that bracket while more(i, l, h), testing only points inside
+// it. The kept end at the close, tested once more where it was only inferred; none where that test
+// fails (not monotone there: the caller's plain bisection decides).
+template <bool Up, class F, class More>
+std::optional<double> replay(F& test, double l, double h, int i, More&& more, double m_ok, double m_bad, double eps) {
+    double x_ok = kept<Up>(l, h), x_bad = other<Up>(l, h);
+    narrow(test, x_ok, m_ok, x_bad, m_bad, eps);
+    bool tested = true;  // the kept end passed a test (not inferred)
+    for (; more(i, l, h); ++i) {
+        const double mid = 0.5 * (l + h);
+        bool pass = false, known = true;
+        if (Up ? mid <= x_ok : mid >= x_ok) pass = true, known = false;
+        else if (Up ? mid >= x_bad : mid <= x_bad) pass = false;
+        else if ((pass = test(mid).ok)) x_ok = mid;
+        else x_bad = mid;
+        if (pass) kept<Up>(l, h) = mid, tested = known;
+        else other<Up>(l, h) = mid;
+    }
+    if (tested || test(kept<Up>(l, h)).ok) return kept<Up>(l, h);
+    return std::nullopt;
+}
+
 // Where ok flips in [lo, hi]. Up: ok true up to the flip, false beyond; the largest x that passes
 // (lo if none). Not Up: ok false up to it, true beyond; the smallest (hi if none). `test` returns
 // bool (bisection) or Probe (guided, the same answer where the test is monotone).
@@ -73,18 +109,16 @@ double flip(F&& test, double lo, double hi) {
         if constexpr (guided) return test(x).ok;
         else return test(x);
     };
-    // The end first tested, the one halving keeps on a pass (the answer), the other.
-    auto kept = [](double& l, double& h) -> double& { return Up ? l : h; };
-    auto other = [](double& l, double& h) -> double& { return Up ? h : l; };
     if (!(hi > lo)) return Up ? lo : hi;
+    auto more = [](int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; };
     auto bisect = [&](double l, double h) {
-        for (int i = 0; i < bisection_steps && h - l > resolution * h; ++i) {
+        for (int i = 0; more(i, l, h); ++i) {
             const double mid = 0.5 * (l + h);
-            (ok(mid) ? kept(l, h) : other(l, h)) = mid;
+            (ok(mid) ? kept<Up>(l, h) : other<Up>(l, h)) = mid;
         }
-        return kept(l, h);
+        return kept<Up>(l, h);
     };
-    const double end = Up ? hi : lo;
+    const double end = Up ? hi : lo;  // the end tested first
     if constexpr (!guided) {
         if (test(end)) return end;
         return bisect(lo, hi);
@@ -95,28 +129,15 @@ double flip(F&& test, double lo, double hi) {
         double l = lo, h = hi, m_ok = 0.0, m_bad = first.margin;
         int i = 0;
         bool found = false;
-        for (; i < bisection_steps && h - l > resolution * h && !found; ++i) {
+        for (; more(i, l, h) && !found; ++i) {
             const double mid = 0.5 * (l + h);
             const Probe p = test(mid);
-            if (p.ok) kept(l, h) = mid, m_ok = p.margin, found = true;
-            else other(l, h) = mid, m_bad = p.margin;
+            if (p.ok) kept<Up>(l, h) = mid, m_ok = p.margin, found = true;
+            else other<Up>(l, h) = mid, m_bad = p.margin;
         }
-        if (!found) return kept(l, h);
-        // ... then the flip found by regula falsi, and the rest of the bisection replayed on it.
-        double x_ok = kept(l, h), x_bad = other(l, h);
-        narrow(test, x_ok, m_ok, x_bad, m_bad, flip_eps(l, h));
-        bool tested = true;  // the answer so far passed a test (not inferred)
-        for (; i < bisection_steps && h - l > resolution * h; ++i) {
-            const double mid = 0.5 * (l + h);
-            bool pass = false, known = true;
-            if (Up ? mid <= x_ok : mid >= x_ok) pass = true, known = false;
-            else if (Up ? mid >= x_bad : mid <= x_bad) pass = false;
-            else if ((pass = ok(mid))) x_ok = mid;
-            else x_bad = mid;
-            if (pass) kept(l, h) = mid, tested = known;
-            else other(l, h) = mid;
-        }
-        if (tested || ok(kept(l, h))) return kept(l, h);
+        if (!found) return kept<Up>(l, h);
+        // ... then the rest on the flip.
+        if (const auto answer = replay<Up>(test, l, h, i, more, m_ok, m_bad, flip_eps(l, h))) return *answer;
         return bisect(lo, hi);
     }
 }
@@ -135,42 +156,27 @@ double lowest(F&& test, double lo, double hi) {
 
 // `steps` halvings of [lo, hi] keeping the passing half, from lo that passed (margin m_lo; hi not
 // tested): where they end, lo if no point passes. Guided as highest(): the halvings up to the first
-// failing point, then ITP between the last two, then the rest replayed on that bracket.
+// failing point, then the rest replayed on the flip.
 template <class F>
 double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
-    auto plain = [&] {
-        double l = lo, h = hi;
-        for (int i = 0; i < steps; ++i) {
-            const double mid = 0.5 * (l + h);
-            (test(mid).ok ? l : h) = mid;
-        }
-        return l;
-    };
+    auto more = [steps](int i, double, double) { return i < steps; };
     double l = lo, h = hi, m_h = 0.0;
     int i = 0;
     bool failed = false;
-    for (; i < steps && !failed; ++i) {
+    for (; more(i, l, h) && !failed; ++i) {
         const double mid = 0.5 * (l + h);
         const Probe p = test(mid);
         if (p.ok) l = mid, m_lo = p.margin;
         else h = mid, m_h = p.margin, failed = true;
     }
     if (!failed) return l;
-    double x_ok = l, x_bad = h;
-    narrow(test, x_ok, m_lo, x_bad, m_h, 0.25 * std::ldexp(hi - lo, -steps));
-    bool tested = true;  // l passed a test (not inferred)
-    for (; i < steps; ++i) {
+    if (const auto end = replay<true>(test, l, h, i, more, m_lo, m_h, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
+    l = lo, h = hi;  // the plain halvings
+    for (i = 0; more(i, l, h); ++i) {
         const double mid = 0.5 * (l + h);
-        bool pass = false, known = true;
-        if (mid <= x_ok) pass = true, known = false;
-        else if (mid >= x_bad) pass = false;
-        else if ((pass = test(mid).ok)) x_ok = mid;
-        else x_bad = mid;
-        if (pass) l = mid, tested = known;
-        else h = mid;
+        (test(mid).ok ? l : h) = mid;
     }
-    if (tested || test(l).ok) return l;
-    return plain();
+    return l;
 }
 
 }  // namespace firtp::search
