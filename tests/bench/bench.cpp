@@ -5,14 +5,16 @@
 // Machines: "limits" is the built-in machine (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3 per axis), every
 // move smoothed at its limits; "chain" is the paper's fixed chain (T 148, 89, 31, 11 ms, as many
 // stages as asked).
+#include "random_corners.hpp"
+
 #include <firtp/planner.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <random>
 
 using namespace firtp;
+using firtp::bench::RandomCorners;
 
 namespace {
 
@@ -31,21 +33,11 @@ PlannerParameters machine(bool limits, int axes, int stages) {
     return p;
 }
 
-// Random corners in `axes` axes, 2-40 mm, 100-300 mm/s (or 250), 0.05 mm tolerance.
+// `count` of firtp::bench::RandomCorners (random_corners.hpp).
 std::vector<Block> random_blocks(int axes, std::size_t count, bool varying_feed, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0), length(2.0, 40.0), feed(100.0, 300.0);
+    RandomCorners corners(axes, varying_feed, seed);
     std::vector<Block> blocks(count);
-    AxisVector at = AxisVector::Zero();
-    for (std::size_t i = 0; i < count; ++i) {
-        AxisVector d = AxisVector::Zero();
-        for (int a = 0; a < axes; ++a) d[a] = unit(rng);
-        at += d.normalized() * length(rng);
-        blocks[i].target = at;
-        blocks[i].feed = varying_feed ? feed(rng) : 250.0;
-        blocks[i].tolerance = 0.05;
-        blocks[i].line = static_cast<std::int64_t>(i + 1);
-    }
+    for (Block& b : blocks) b = corners.next();
     return blocks;
 }
 

@@ -23,6 +23,7 @@
 // the blocks and at the end. Exit status 1 when the output does not rest exactly on the last
 // command, or when the peak RSS grew by more than --max-growth-kib after the first tenth.
 #include "bench_stats.hpp"
+#include "random_corners.hpp"
 
 #include <firtp/gcode.hpp>
 #include <firtp/ini.hpp>
@@ -99,29 +100,18 @@ private:
     std::int64_t line_ = 0;
 };
 
-// firtp_bench's BM_PlanBlock blocks: corners 2-40 mm apart in X Y Z, 100-300 mm/s, 0.05 mm.
+// firtp_bench's BM_PlanBlock blocks (random_corners.hpp), varying feeds.
 class CornerSource : public Source {
 public:
-    CornerSource(long long blocks, std::uint64_t seed) : left_(blocks), rng_(seed) {}
+    CornerSource(long long blocks, std::uint64_t seed) : left_(blocks), corners_(3, true, seed) {}
     std::optional<Block> next() override {
         if (left_-- <= 0) return std::nullopt;
-        AxisVector d = AxisVector::Zero();
-        for (int a = 0; a < 3; ++a) d[a] = unit_(rng_);
-        at_ += d.normalized() * length_(rng_);
-        Block b;
-        b.target = at_;
-        b.feed = feed_(rng_);
-        b.tolerance = 0.05;
-        b.line = ++line_;
-        return b;
+        return corners_.next();
     }
 
 private:
     long long left_;
-    std::mt19937_64 rng_;
-    std::uniform_real_distribution<double> unit_{-1.0, 1.0}, length_{2.0, 40.0}, feed_{100.0, 300.0};
-    AxisVector at_ = AxisVector::Zero();
-    std::int64_t line_ = 0;
+    RandomCorners corners_;
 };
 
 class RandomChordSource : public Source {

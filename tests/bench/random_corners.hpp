@@ -1,0 +1,37 @@
+// The random corners of firtp_bench (BM_PlanBlock, BM_Tick) and firtp_plan_stream --generate
+// corners: each block 2-40 mm from the last in a random direction of the first `axes` axes, at
+// 100-300 mm/s (or 250 throughout), 0.05 mm tolerance.
+#pragma once
+
+#include <firtp/types.hpp>
+
+#include <cstdint>
+#include <random>
+
+namespace firtp::bench {
+
+class RandomCorners {
+public:
+    RandomCorners(int axes, bool varying_feed, std::uint64_t seed) : axes_(axes), varying_(varying_feed), rng_(seed) {}
+    Block next() {
+        AxisVector d = AxisVector::Zero();
+        for (int a = 0; a < axes_; ++a) d[a] = unit_(rng_);
+        at_ += d.normalized() * length_(rng_);
+        Block b;
+        b.target = at_;
+        b.feed = varying_ ? feed_(rng_) : 250.0;
+        b.tolerance = 0.05;
+        b.line = ++line_;
+        return b;
+    }
+
+private:
+    int axes_;
+    bool varying_;
+    std::mt19937_64 rng_;
+    std::uniform_real_distribution<double> unit_{-1.0, 1.0}, length_{2.0, 40.0}, feed_{100.0, 300.0};
+    AxisVector at_ = AxisVector::Zero();
+    std::int64_t line_ = 0;
+};
+
+}  // namespace firtp::bench
