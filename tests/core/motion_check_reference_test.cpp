@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -267,4 +268,52 @@ TEST(MotionCheckReference, SumsOverTheLegsGiveTheSameStateBitForBit) {
             }
         }
     }
+}
+
+// Where the sweep holds the legs within the limits, a chord of the samples strays at most
+// sag = period^2 / 8 |a|max from the path: the smooth approach plus sag bounds what the chords
+// give, on every sample grid, so closest_approach may answer it without sampling them.
+TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
+    std::mt19937_64 rng(19);
+    constexpr double period = 0.001;
+    int within = 0, chords_worse = 0;
+    double closest = 0.0;  // the largest (sampled - smooth) / sag
+    LimitSweep sweep(256);
+    for (int axes : {1, 2, 3, 5}) {
+        for (int run = 0; run < 1500; ++run) {
+            std::vector<TimedLeg> legs = random_legs(rng, axes, 3 + static_cast<int>(rng() % 20));
+            index_legs(legs);
+            // A sharp step jumps in velocity: no acceleration bounds it (the sweep checks the jump's
+            // velocity only), and the look-ahead does not use it for the bound either.
+            const bool sharp = std::any_of(legs.begin(), legs.end(), [](const TimedLeg& l) {
+                return l.rising.width() == 0.0 || l.falling.width() == 0.0;
+            });
+            // The weakest machine of limits_of's shape that these legs keep to: the bound as tight
+            // as it gets on the most loaded axis.
+            auto keeps = [&](double scale) { return sweep.check(legs, 0.0, legs.back().finish(), limits_of(axes, scale), period).ok; };
+            if (sharp || !keeps(400.0)) continue;
+            double lo = 0.01, hi = 400.0;
+            for (int k = 0; k < 30; ++k) (keeps(std::sqrt(lo * hi)) ? hi : lo) = std::sqrt(lo * hi);
+            const MachineLimits limits = limits_of(axes, hi);
+            double acc = 0.0;
+            for (int i = 0; i < axes; ++i) acc += std::pow(limits.axis[i].max_acceleration * (1.0 + 1e-6), 2);
+            const double sag = period * period / 8.0 * std::sqrt(acc);
+            const std::size_t corner = rng() % (legs.size() - 1);
+            const TimedLeg& c = legs[corner];
+            const double guess = c.rise + c.fall + 0.5 * c.falling.width();
+            const Approach sampled = closest_approach(legs, corner, guess, period, 8);
+            const Approach bounded = closest_approach(legs, corner, guess, period, 8, sag, HUGE_VAL);
+            ASSERT_EQ(bounded.smooth, sampled.smooth);
+            ASSERT_EQ(bounded.distance, sampled.smooth + sag);
+            ASSERT_GE(bounded.distance, sampled.sampled) << "axes " << axes << " run " << run;
+            ++within;
+            chords_worse += sampled.sampled > sampled.smooth;
+            closest = std::max(closest, (sampled.sampled - sampled.smooth) / sag);
+        }
+    }
+    // Enough sets within the limits, and corners where the chords pass further out than the path
+    // (where the bound is what holds the answer).
+    std::printf("within the limits %d, chords further out than the path %d, by up to %.3f sag\n", within, chords_worse, closest);
+    EXPECT_GT(within, 300);
+    EXPECT_GT(chords_worse, 50);
 }

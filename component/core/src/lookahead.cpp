@@ -69,6 +69,12 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
     jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
+    double machine_acc = 0.0;  // |a| the limit sweep lets through (its slack is 1e-8 of a limit)
+    for (int i = 0; i < machine_.axes; ++i) {
+        const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6);
+        if (a > 0.0) machine_acc += a * a;
+    }
+    sag_ = parameters_.period * parameters_.period / 8.0 * std::sqrt(machine_acc);
     legs_.reserve(3 * segments_.size() + 64);
     leg_of_.resize(segments_.size());
     when_.resize(segments_.size());

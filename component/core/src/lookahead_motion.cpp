@@ -349,11 +349,13 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     build_legs(from);
     double end = enter_[first];
     double width = 0.0;  // the widest kernel of these legs: the reach of a change among them
+    bool sharp = false;  // a step without stages jumps in velocity: no acceleration bounds its chords
     const std::size_t legs = last < count_ ? leg_of_[last - 1] + 1 : legs_.size();
     for (std::size_t k = 0; k < legs; ++k) {
         const TimedLeg& leg = legs_[k];
         end = std::max(end, leg.finish());
         width = std::max({width, leg.rising.width(), leg.falling.width()});
+        sharp = sharp || leg.rising.width() == 0.0 || leg.falling.width() == 0.0;
     }
     max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
@@ -392,7 +394,12 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period, &latest);
             s.checked_reach = latest - when_[i];
         } else {
-            const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], parameters_.period);
+            // Where the sweep above covered the approach (Newton moves at most 24 periods), the
+            // chords' sag is bounded by the limits it held.
+            const double period = parameters_.period;
+            const bool swept = !sharp && when_[i] - 32.0 * period >= begin;
+            const Approach approach =
+                closest_approach(legs_, leg_of_[i], when_[i], period, 1, sag_, swept ? s.tolerance * (1.0 - error_margin) : 0.0);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];
         }

@@ -309,7 +309,8 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 
 }  // namespace
 
-Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases) {
+Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases,
+                          double sag, double enough) {
     Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
     double t = guess;
     for (int i = 0; i < 6; ++i) {
@@ -322,11 +323,18 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         const double df = s.velocity.squaredNorm() + s.position.dot(s.acceleration);
         if (!(df > 0.0)) break;
         const double step = std::clamp(-f / df, -4.0 * period, 4.0 * period);
-        if (std::abs(step) < 1e-12) break;
+        if (std::abs(step) < 1e-9) break;
         t += step;
     }
     // The drives go straight from sample to sample (t = (k + phase) period): the chords around
-    // the approach, for each phase the worst.
+    // the approach, for each phase the worst. The chord across the approach's time is within sag
+    // of the path there, whatever the phase.
+    if (best.smooth + sag <= enough) {
+        best.sampled = best.smooth + sag;
+        best.distance = best.sampled;
+        best.latest = std::max(best.latest, best.time + period);
+        return best;
+    }
     best.sampled = 0.0;
     for (int f = 0; f < std::max(phases, 1); ++f) {
         const double phase = static_cast<double>(f) / std::max(phases, 1);

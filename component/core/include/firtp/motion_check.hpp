@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cmath>
 #include <span>
 
 namespace firtp {
@@ -106,8 +107,11 @@ constexpr int sampled_chords = 3;
 // An upper bound of the closest approach of the path to the corner point at the end of
 // legs[corner], searched from time `guess`; samples at t = k period, or with `phases` > 1 the worst
 // of the sample grids shifted by 1 / phases of a period (a scaled clock samples off the grid).
+// `sag`: where the path's acceleration is known to stay within limits (the limit sweep passed), a
+// chord of the samples strays at most sag = period^2 / 8 |a|max from the path it spans; where the
+// smooth approach plus sag is `enough`, that bound is the answer and the chords are not sampled.
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period,
-                          int phases = 1);
+                          int phases = 1, double sag = HUGE_VAL, double enough = 0.0);
 
 // The largest distance from the programmed path (the legs commanded nearby, as straight
 // segments) of the samples (t = k period) within `width` / 2 of time `at`, the corner at the end
