@@ -4,6 +4,7 @@
 #include "chain_fixture.hpp"
 
 #include <firtp/hal/control_pins.hpp>
+#include <firtp/hal/stream_records.hpp>
 #include <firtp/host.hpp>
 
 #include <gtest/gtest.h>
@@ -39,6 +40,41 @@ TEST(Bridge, RunsAProgramAndReportsProgress) {
     for (const auto& s : chain.statuses) saw_line_12 = saw_line_12 || s.current_line == 12;
     EXPECT_TRUE(saw_line_12);
     for (std::size_t i = 1; i < chain.states.size(); ++i) ASSERT_EQ(chain.states[i].seq, chain.states[i - 1].seq + 1);
+}
+
+// The component takes the last block from the stream, and the bridge reads its pins before the
+// component has written them (queue-depth 0, idle) and the stream after (empty). That status
+// must not say "idle, nothing queued": a host would take the program as done (issue: the
+// diamond ended 34.5 mm short under LinuxCNC). The take is made here by a second reader.
+TEST(Bridge, BlocksTakenButNotYetInThePinsStillCount) {
+    test::Chain chain(test::message_machine());
+    chain.publish(block_message(10, 0, 5, 1, 11));
+    chain.run(400);
+    ASSERT_EQ(chain.status().state, firtp_lcm::status_t::IDLE);
+    ASSERT_EQ(chain.status().queue_depth, 0);
+    chain.publish(block_message(10, 10, 5, 2, 12));
+    while (chain.lcm->handleTimeout(0) > 0) {
+    }
+    const int taker = hal_init("taker");
+    ASSERT_GT(taker, 0);
+    hal_stream_t stream;
+    ASSERT_EQ(hal_stream_attach(&stream, taker, stream::default_block_key, stream::block_types), 0);
+    hal_stream_data record[stream::block_elements];
+    ASSERT_EQ(hal_stream_read(&stream, record, nullptr), 0);  // the component's take, its pins not yet set
+    EXPECT_EQ(hal_stream_depth(&stream), 0);
+    const std::size_t before = chain.statuses.size();
+    chain.control(1.0, false, false);  // a control makes a status due at once
+    while (chain.lcm->handleTimeout(0) > 0) {
+    }
+    chain.chain->poll();
+    while (chain.lcm->handleTimeout(0) > 0) {
+    }
+    ASSERT_EQ(chain.statuses.size(), before + 1);
+    EXPECT_EQ(chain.status().state, firtp_lcm::status_t::IDLE);
+    EXPECT_EQ(chain.status().queue_depth, 1);
+    EXPECT_FALSE(chain.chain->bridge().idle());
+    hal_stream_detach(&stream);
+    hal_exit(taker);
 }
 
 TEST(Bridge, NanBlockIsRefusedNamingSeqAndLineAndStopsTheProgram) {

@@ -125,9 +125,20 @@ void Bridge::report(std::int32_t error, std::string text) {
     error_text_ = std::move(text);
 }
 
+std::int64_t Bridge::component_depth() const {
+    const std::int64_t depth = std::int64_t{hal_pin::get(pins_->queue_depth)} + hal_stream_depth(&streams_->blocks);
+    // Only at rest and in a program this bridge writes whose records the component counts (a
+    // halted program's rest is refused uncounted; an abort drops it).
+    if (!streams_->has_states || sequence_.program() == 0 || abort_ || fault_ ||
+        hal_pin::get(pins_->state) != firtp_lcm::status_t::IDLE)
+        return depth;
+    const std::int64_t written = sequence_.next_seq() - 1;
+    const std::int64_t taken = reported_program_ == sequence_.program() ? reported_next_seq_ - 1 : 0;
+    return std::max(depth, written - taken);
+}
+
 bool Bridge::component_idle() const {
-    return hal_pin::get(pins_->queue_depth) == 0 && hal_stream_depth(&streams_->blocks) == 0 &&
-           hal_pin::get(pins_->state) != firtp_lcm::status_t::ABORTING;
+    return component_depth() == 0 && hal_pin::get(pins_->state) != firtp_lcm::status_t::ABORTING;
 }
 
 // The crc first: a corrupted block or event is refused like a lost one (never planned, never
@@ -400,11 +411,11 @@ void Bridge::publish_status() {
     const bool own = sequence_.program() != 0;  // else the component's, as its axis states report it
     s.program = own ? sequence_.program() : reported_program_;
     s.next_seq = own ? sequence_.next_seq() : reported_next_seq_;
+    s.state = fault_ ? std::int8_t{firtp_lcm::status_t::ERROR} : static_cast<std::int8_t>(hal_pin::get(pins_->state));
     const int stream_depth = hal_stream_depth(&streams_->blocks);
-    s.queue_depth = hal_pin::get(pins_->queue_depth) + stream_depth;
+    s.queue_depth = static_cast<std::int32_t>(component_depth());
     s.queue_free = hal_stream_maxdepth(&streams_->blocks) - 1 - stream_depth;
     s.current_line = hal_pin::get(pins_->current_line);
-    s.state = fault_ ? std::int8_t{firtp_lcm::status_t::ERROR} : static_cast<std::int8_t>(hal_pin::get(pins_->state));
     s.feed_scale = feed_scale_;
     const std::int32_t component_error = hal_pin::get(pins_->error_code);
     if (error_ == 0 && component_error != 0) {

@@ -80,6 +80,11 @@ private:
     void forward_states();
     void publish_status();
     bool component_idle() const;
+    // Blocks not finished: the component's queue-depth pin plus the stream's depth. Read one after
+    // the other, the two can tear (the component takes the last blocks from the stream, its pin
+    // still says 0): at rest, the records written that the latest axis state does not count as
+    // taken (its next_seq) are not finished either.
+    std::int64_t component_depth() const;
 
     lcm::LCM* lcm_;
     BridgeOptions options_;
