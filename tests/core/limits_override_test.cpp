@@ -87,6 +87,16 @@ std::vector<std::pair<int, double>> rate_events(std::mt19937_64& rng, int moving
     return events;
 }
 
+// How far the samples' `order`-th differences over period^order can read off from rounding alone:
+// positions are sums over many legs, good to about 1e-14 of their size, and the differences'
+// coefficients sum to 2^order (seed 47, program 393 at a 0.25 ms period: a third difference of
+// 65037.9457 on a jerk limit of 65037.8728, the samples' own jerk exactly at it; noise 0.26).
+double difference_noise(const std::vector<AxisState>& samples, int axis, double period, int order) {
+    double largest = 0.0;
+    for (const AxisState& s : samples) largest = std::max(largest, std::abs(s.position[axis]));
+    return std::ldexp(1e-14 * largest, order) / std::pow(period, order);
+}
+
 // `holds`: rate 0 (hold), resumes and aborts among the rate changes.
 // `jerk`: check the jerk limit too. `only` >= 0: that program of the sequence alone.
 void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool jerk, int only = -1) {
@@ -122,10 +132,11 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
                 }
                 }
                 ASSERT_LE(m.max_velocity[a], l.max_velocity * slack) << "axis " << a;
-                ASSERT_LE(m.max_acceleration[a], l.max_acceleration * slack) << "axis " << a;
+                ASSERT_LE(m.max_acceleration[a], l.max_acceleration * slack + difference_noise(r.samples, a, p.period, 2))
+                    << "axis " << a;
                 if (jerk && l.max_jerk > 0.0) {
-                ASSERT_LE(m.max_jerk[a], l.max_jerk * slack) << "axis " << a;
-            }
+                    ASSERT_LE(m.max_jerk[a], l.max_jerk * slack + difference_noise(r.samples, a, p.period, 3)) << "axis " << a;
+                }
                 worst = std::max(worst, m.max_acceleration[a] / l.max_acceleration);
             }
             ASSERT_EQ(r.samples.back().velocity, AxisVector::Zero());
@@ -223,6 +234,8 @@ TEST(RandomMachines, HoldResumeAndAbortKeepLimitsToleranceAndStopBound) { check_
 TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 480, true, true); }
 
 // Programs of those soaks that failed once, each alone (seed, index in its sequence):
+// - 47/393: not the plan; the third differences of positions rounded to doubles at a 0.25 ms
+//   period (difference_noise).
 // - 34/1723 (and 33/1222, 37/207, 38/858, 36/1423): held, the check also summed the legs after
 //   the hold's stop (the resume's start), which cancelled the braking: 2x an axis' acceleration.
 // - 33/962, 38/1102: the start after a hold's stop began inside the wider kernel of the step before the
@@ -238,7 +251,7 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 TEST(RandomMachines, HoldResumeRegressions) {
     const std::pair<std::uint64_t, int> programs[] = {{34, 1723}, {33, 1222}, {37, 207}, {38, 858}, {36, 1423},
                                                       {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363},
-                                                      {41, 404}, {35, 1070}};
+                                                      {41, 404}, {35, 1070}, {47, 393}};
     for (const auto& [seed, index] : programs) {
         SCOPED_TRACE("seed " + std::to_string(seed) + ", program " + std::to_string(index));
         check_rate_changes(seed, 0, true, true, index);
