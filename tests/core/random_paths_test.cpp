@@ -201,3 +201,45 @@ TEST(RandomPaths, ContourToleranceHoldsOnTheWholePath) {
         ASSERT_EQ(m.end_position, p.blocks.back().target);
     }
 }
+
+// Seed 23 program 3032 of the spatial suite (FIRTP_RANDOM_SEED=21 at scale 4), inputs to 9 digits:
+// a reversal at unequal feeds. Its worst sampling phase is a kink (the nearer of two samples either
+// side of the turn); found to 12 golden steps it fell 1.4e-5 of the tolerance short, and the path
+// passed the corner at 0.0181274696 mm on a 0.0181274027 mm tolerance.
+TEST(RandomPaths, ReversalWorstSamplingPhaseIsAKink) {
+    PlannerParameters prm;
+    prm.fixed_chain = true;
+    prm.filters.stages = 4;
+    prm.filters.T = {0.00700641232, 0.00484392344, 0.00405151877, 0.00297517285};
+    prm.period = 0.001;
+    prm.tolerance_meaning = ToleranceMeaning::corner_point;
+    const double rows[7][6] = {{1.31379179, -0.668292817, -1.06599414, 34.0293822, 0.0181274027, 1},
+                               {-13.5170579, 6.87578716, 10.9675709, 65.5450925, 0.0181274027, 0},
+                               {-14.4232024, 7.97091104, 10.8812649, 16.5573247, 0.0181274027, 1},
+                               {-14.8405678, 6.8788341, 10.2503554, 162.207058, 0.0181274027, 1},
+                               {-17.3135907, -3.79699576, 7.6366234, 211.161184, 0.00186489605, 1},
+                               {-15.9222227, -6.06983411, 8.06739816, 8.86250096, 0.0181274027, 1},
+                               {-17.0081126, -6.21044934, 8.68461875, 15.9397345, 0.0181274027, 1}};
+    std::vector<Block> blocks;
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    for (int i = 0; i < 7; ++i) {
+        Block b;
+        b.line = i + 1;
+        b.target = test::xyz(rows[i][0], rows[i][1], rows[i][2]);
+        b.feed = rows[i][3];
+        b.tolerance = rows[i][4];
+        b.termination = rows[i][5] > 0.5 ? Termination::blend : Termination::exact_stop;
+        b.type = MotionType::feed;
+        blocks.push_back(b);
+        points.push_back(b.target);
+    }
+    const Trajectory t = plan_trajectory(prm, AxisVector::Zero(), blocks);
+    const Measured m = measure(t.samples, points, prm.period);
+    ASSERT_EQ(m.corner_errors.size(), 6u);
+    EXPECT_GT(m.corner_errors[0], 0.99 * blocks[0].tolerance);  // the reversal, at its tolerance
+    for (std::size_t c = 0; c < m.corner_errors.size(); ++c) {
+        if (blocks[c].termination == Termination::blend) {
+            EXPECT_LE(m.corner_errors[c], blocks[c].tolerance) << "corner " << c;
+        }
+    }
+}
