@@ -321,3 +321,44 @@ TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
     EXPECT_GT(within, 300);
     EXPECT_GT(chords_worse, 50);
 }
+
+// chain_acceleration_bound holds the acceleration of legs smoothed by the paper's chain, on random
+// chains and legs, within the window it is asked about.
+TEST(MotionCheckReference, ChainAccelerationBoundHolds) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double tightest = 0.0;  // the largest acceleration found / the bound
+    for (int run = 0; run < 300; ++run) {
+        FilterTimes f;
+        f.stages = 1 + static_cast<int>(rng() % 4);
+        for (int i = 0; i < f.stages; ++i) f.T[i] = 0.002 + 0.15 * unit(rng);
+        std::sort(f.T.begin(), f.T.begin() + f.stages, std::greater<>());
+        const FirChain chain(f);
+        const Kernel k{0.0, 0.0, &chain};
+        std::vector<TimedLeg> legs;
+        double start = 0.0;
+        for (int n = 2 + static_cast<int>(rng() % 8); n > 0; --n) {
+            TimedLeg l;
+            l.tv = 0.001 + 0.2 * unit(rng);
+            AxisVector u = AxisVector::Zero();
+            for (int i = 0; i < 3; ++i) u[i] = unit(rng) - 0.5;
+            l.delta = u.normalized() * (l.tv * (5.0 + 300.0 * unit(rng)));
+            l.rise = start;
+            l.fall = l.tv;
+            l.rising = l.falling = k;
+            legs.push_back(l);
+            start += l.tv * unit(rng);  // overlaps of any length
+        }
+        index_legs(legs);
+        const double end = legs.back().finish();
+        const double from = end * unit(rng), to = from + 0.05 * unit(rng);
+        const double bound = chain_acceleration_bound(legs, chain, from, to);
+        for (int s = 0; s <= 200; ++s) {
+            const double t = from + (to - from) * s / 200.0;
+            const double a = relative_state(legs, 0, t).acceleration.norm();
+            ASSERT_LE(a, bound * (1.0 + 1e-9) + 1e-9) << "run " << run << " t " << t;
+            if (bound > 0.0) tightest = std::max(tightest, a / bound);
+        }
+    }
+    EXPECT_GT(tightest, 0.5);  // not a bound so loose that it proves nothing
+}

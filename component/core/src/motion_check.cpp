@@ -310,7 +310,7 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 }  // namespace
 
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases,
-                          double sag, double enough) {
+                          double sag, double enough, double too_far) {
     Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
     // Any point of the path is at least as far as the closest: where the guess itself is close
     // enough, so is the approach.
@@ -341,6 +341,10 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     // The drives go straight from sample to sample (t = (k + phase) period): the chords around
     // the approach, for each phase the worst. The chord across the approach's time is within sag
     // of the path there, whatever the phase.
+    if (best.smooth > too_far) {
+        best.sampled = best.distance = best.smooth;
+        return best;
+    }
     if (best.smooth + sag <= enough) {
         best.sampled = best.smooth + sag;
         best.distance = best.sampled;
@@ -363,6 +367,20 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     }
     best.distance = std::max(best.smooth, best.sampled);
     return best;
+}
+
+double chain_acceleration_bound(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to) {
+    const FilterTimes& f = chain.filters();
+    const double longest = *std::max_element(f.T.begin(), f.T.begin() + f.stages);
+    const double earliest = from - chain.delay();
+    double speeds = 0.0;
+    for (const TimedLeg& l : legs) {
+        if (!(l.tv > 0.0)) continue;
+        const double v = l.delta.norm() / l.tv;
+        if (l.rise >= earliest && l.rise <= to) speeds += v;
+        if (l.rise + l.fall >= earliest && l.rise + l.fall <= to) speeds += v;
+    }
+    return speeds / longest;
 }
 
 double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,

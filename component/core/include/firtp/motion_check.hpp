@@ -110,8 +110,16 @@ constexpr int sampled_chords = 3;
 // `sag`: where the path's acceleration is known to stay within limits (the limit sweep passed), a
 // chord of the samples strays at most sag = period^2 / 8 |a|max from the path it spans; where the
 // smooth approach plus sag is `enough`, that bound is the answer and the chords are not sampled.
+// Where the smooth approach alone is beyond `too_far`, no chord brings the answer back: it is
+// returned as it is (a lower bound then), the chords not sampled.
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period,
-                          int phases = 1, double sag = HUGE_VAL, double enough = 0.0);
+                          int phases = 1, double sag = HUGE_VAL, double enough = 0.0, double too_far = HUGE_VAL);
+
+// An upper bound of |acceleration| within [from, to] of legs whose steps are all smoothed by
+// `chain` (the paper's mode): a step acts for Td from its kernel's start, and the chain's density
+// is at most 1 / T of its longest filter (a moving average of anything is), so |a| <= sum |v| / T_max
+// over the steps that start within [from - Td, to]. closest_approach's sag with no limits to lean on.
+double chain_acceleration_bound(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to);
 
 // The largest distance from the programmed path (the legs commanded nearby, as straight
 // segments) of the samples (t = k period) within `width` / 2 of time `at`, the corner at the end
