@@ -276,7 +276,7 @@ TEST(MotionCheckReference, SumsOverTheLegsGiveTheSameStateBitForBit) {
 TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
     std::mt19937_64 rng(19);
     constexpr double period = 0.001;
-    int within = 0, chords_worse = 0;
+    int within = 0, chords_worse = 0, by_jerks = 0;
     double closest = 0.0;  // the largest (sampled - smooth) / sag
     LimitSweep sweep(256);
     for (int axes : {1, 2, 3, 5}) {
@@ -295,21 +295,38 @@ TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
             double lo = 0.01, hi = 400.0;
             for (int k = 0; k < 30; ++k) (keeps(std::sqrt(lo * hi)) ? hi : lo) = std::sqrt(lo * hi);
             const MachineLimits limits = limits_of(axes, hi);
-            double acc = 0.0;
-            for (int i = 0; i < axes; ++i) acc += std::pow(limits.axis[i].max_acceleration * (1.0 + 1e-6), 2);
-            const double sag = period * period / 8.0 * std::sqrt(acc);
+            double acc2 = 0.0;
+            for (int i = 0; i < axes; ++i) acc2 += std::pow(limits.axis[i].max_acceleration * (1.0 + 1e-6), 2);
+            const double sag = period * period / 8.0 * std::sqrt(acc2);
             const std::size_t corner = rng() % (legs.size() - 1);
             const TimedLeg& c = legs[corner];
             const double guess = c.rise + c.fall + 0.5 * c.falling.width();
             const Approach sampled = closest_approach(legs, corner, guess, period, 8);
             // Enough at once: the guess's own distance plus sag.
-            const Approach at_guess = closest_approach(legs, corner, guess, period, 8, sag, HUGE_VAL);
+            const double acc = std::sqrt(acc2);
+            const Approach at_guess = closest_approach(legs, corner, guess, period, 8, {acc, HUGE_VAL, HUGE_VAL});
             ASSERT_EQ(at_guess.distance, relative_position(legs, corner, guess).norm() + sag);
             ASSERT_GE(at_guess.distance, sampled.distance) << "axes " << axes << " run " << run;
             // Enough only at the approach: Newton's, plus sag.
-            const Approach at_approach = closest_approach(legs, corner, guess, period, 8, sag, sampled.smooth + sag);
+            const Approach at_approach = closest_approach(legs, corner, guess, period, 8, {acc, HUGE_VAL, sampled.smooth + sag});
             ASSERT_EQ(at_approach.distance, sampled.smooth + sag);
             ASSERT_GE(at_approach.distance, sampled.sampled) << "axes " << axes << " run " << run;
+            // The sag from the acceleration at the approach and the jerk limit, where every kernel
+            // has a jerk stage (one stage jumps in acceleration).
+            const bool two_stages = std::all_of(legs.begin(), legs.end(), [](const TimedLeg& l) {
+                return l.rising.b > 0.0 && l.falling.b > 0.0;
+            });
+            if (two_stages) {
+                double jerk2 = 0.0;
+                for (int i = 0; i < axes; ++i) jerk2 += std::pow(limits.axis[i].max_jerk * (1.0 + 1e-6), 2);
+                const double jerk = std::sqrt(jerk2);
+                const double near = period * period / 8.0 *
+                                    (relative_state(legs, corner, sampled.time).acceleration.norm() + jerk * period);
+                const Approach by_jerk = closest_approach(legs, corner, guess, period, 8, {HUGE_VAL, jerk, sampled.smooth + near});
+                ASSERT_EQ(by_jerk.distance, sampled.smooth + near);
+                ASSERT_GE(by_jerk.distance, sampled.sampled) << "axes " << axes << " run " << run;
+                ++by_jerks;
+            }
             ++within;
             chords_worse += sampled.sampled > sampled.smooth;
             closest = std::max(closest, (sampled.sampled - sampled.smooth) / sag);
@@ -320,14 +337,15 @@ TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
     std::printf("within the limits %d, chords further out than the path %d, by up to %.3f sag\n", within, chords_worse, closest);
     EXPECT_GT(within, 300);
     EXPECT_GT(chords_worse, 50);
+    EXPECT_GT(by_jerks, 100);
 }
 
-// chain_acceleration_bound holds the acceleration of legs smoothed by the paper's chain, on random
+// chain_bounds holds the acceleration and jerk of legs smoothed by the paper's chain, on random
 // chains and legs, within the window it is asked about.
-TEST(MotionCheckReference, ChainAccelerationBoundHolds) {
+TEST(MotionCheckReference, ChainBoundsHold) {
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double tightest = 0.0;  // the largest acceleration found / the bound
+    double tightest = 0.0, tightest_jerk = 0.0;  // the largest acceleration (jerk) found / the bound
     for (int run = 0; run < 300; ++run) {
         FilterTimes f;
         f.stages = 1 + static_cast<int>(rng() % 4);
@@ -352,13 +370,20 @@ TEST(MotionCheckReference, ChainAccelerationBoundHolds) {
         index_legs(legs);
         const double end = legs.back().finish();
         const double from = end * unit(rng), to = from + 0.05 * unit(rng);
-        const double bound = chain_acceleration_bound(legs, chain, from, to);
+        const ApproachBounds bound = chain_bounds(legs, chain, from, to);
         for (int s = 0; s <= 200; ++s) {
             const double t = from + (to - from) * s / 200.0;
-            const double a = relative_state(legs, 0, t).acceleration.norm();
-            ASSERT_LE(a, bound * (1.0 + 1e-9) + 1e-9) << "run " << run << " t " << t;
-            if (bound > 0.0) tightest = std::max(tightest, a / bound);
+            const AxisState state = relative_state(legs, 0, t);
+            ASSERT_LE(state.acceleration.norm(), bound.acceleration * (1.0 + 1e-9) + 1e-9) << "run " << run << " t " << t;
+            if (bound.acceleration > 0.0) tightest = std::max(tightest, state.acceleration.norm() / bound.acceleration);
+            if (f.stages > 1) {
+                ASSERT_LE(state.jerk.norm(), bound.jerk * (1.0 + 1e-9) + 1e-9) << "run " << run << " t " << t;
+                tightest_jerk = std::max(tightest_jerk, state.jerk.norm() / bound.jerk);
+            } else {
+                ASSERT_EQ(bound.jerk, HUGE_VAL);
+            }
         }
     }
-    EXPECT_GT(tightest, 0.5);  // not a bound so loose that it proves nothing
+    EXPECT_GT(tightest, 0.5);  // not bounds so loose that they prove nothing
+    EXPECT_GT(tightest_jerk, 0.5);
 }

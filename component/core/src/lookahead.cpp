@@ -74,7 +74,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
         const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6);
         if (a > 0.0) machine_acc += a * a;
     }
-    sag_ = parameters_.period * parameters_.period / 8.0 * std::sqrt(machine_acc);
+    machine_acceleration_ = std::sqrt(machine_acc);
     legs_.reserve(3 * segments_.size() + 64);
     leg_of_.resize(segments_.size());
     when_.resize(segments_.size());

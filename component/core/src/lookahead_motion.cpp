@@ -397,9 +397,9 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             // Where the sweep above covered the approach (Newton moves at most 24 periods), the
             // chords' sag is bounded by the limits it held.
             const double period = parameters_.period;
-            const bool swept = !sharp && when_[i] - 32.0 * period >= begin;
-            const Approach approach =
-                closest_approach(legs_, leg_of_[i], when_[i], period, 1, sag_, swept ? s.tolerance * (1.0 - error_margin) : 0.0);
+            ApproachBounds bounds;
+            if (!sharp && when_[i] - 32.0 * period >= begin) bounds = {machine_acceleration_, HUGE_VAL, s.tolerance * (1.0 - error_margin)};
+            const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];
         }

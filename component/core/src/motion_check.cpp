@@ -310,25 +310,38 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 }  // namespace
 
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases,
-                          double sag, double enough, double too_far) {
+                          const ApproachBounds& bounds) {
     Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
-    // Any point of the path is at least as far as the closest: where the guess itself is close
-    // enough, so is the approach.
-    if (enough > 0.0) {
-        const double d = relative_position(legs, corner, guess).norm();
-        if (d + sag <= enough) {
+    // How far the chord across time t strays from the path at most, given |a| there.
+    const double sag = period * period / 8.0 * bounds.acceleration;
+    auto sag_at = [&](double acceleration) { return std::min(sag, period * period / 8.0 * (acceleration + bounds.jerk * period)); };
+    // Any point of the path is at least as far from the corner as the closest: where the guess
+    // itself is close enough, so is the approach. (With a jerk bound the state there tightens the
+    // sag, and Newton starts from it.)
+    const bool by_jerk = std::isfinite(bounds.jerk);
+    AxisState at_guess;
+    if (bounds.enough > 0.0) {
+        double d = 0.0, near = sag;
+        if (by_jerk) {
+            at_guess = relative_state(legs, corner, guess);
+            d = at_guess.position.norm();
+            near = sag_at(at_guess.acceleration.norm());
+        } else {
+            d = relative_position(legs, corner, guess).norm();
+        }
+        if (d + near <= bounds.enough) {
             best.smooth = d;
-            best.sampled = best.distance = d + sag;
+            best.sampled = best.distance = d + near;
             best.latest = guess + period;
             return best;
         }
     }
-    double t = guess;
+    double t = guess, acceleration = HUGE_VAL;  // |a| at the best point
     for (int i = 0; i < 6; ++i) {
         best.latest = std::max(best.latest, t);
-        const AxisState s = relative_state(legs, corner, t);
+        const AxisState s = i == 0 && by_jerk && bounds.enough > 0.0 ? at_guess : relative_state(legs, corner, t);
         const double d = s.position.norm();
-        if (d < best.smooth) best.smooth = d, best.time = t;
+        if (d < best.smooth) best.smooth = d, best.time = t, acceleration = s.acceleration.norm();
         // Newton on (x - P) . v = 0, the derivative of |x - P|^2 / 2.
         const double f = s.position.dot(s.velocity);
         const double df = s.velocity.squaredNorm() + s.position.dot(s.acceleration);
@@ -338,15 +351,16 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         if (std::abs(step) < 1e-9) break;
         t += step;
     }
-    // The drives go straight from sample to sample (t = (k + phase) period): the chords around
-    // the approach, for each phase the worst. The chord across the approach's time is within sag
-    // of the path there, whatever the phase.
-    if (best.smooth > too_far) {
+    if (best.smooth > bounds.too_far) {
         best.sampled = best.distance = best.smooth;
         return best;
     }
-    if (best.smooth + sag <= enough) {
-        best.sampled = best.smooth + sag;
+    // The drives go straight from sample to sample (t = (k + phase) period): the chords around
+    // the approach, for each phase the worst. The chord across the approach's time is within the
+    // sag of the path there, whatever the phase (|a| over its period from the one at the approach).
+    const double near = sag_at(acceleration);
+    if (best.smooth + near <= bounds.enough) {
+        best.sampled = best.smooth + near;
         best.distance = best.sampled;
         best.latest = std::max(best.latest, best.time + period);
         return best;
@@ -369,9 +383,8 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     return best;
 }
 
-double chain_acceleration_bound(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to) {
-    const FilterTimes& f = chain.filters();
-    const double longest = *std::max_element(f.T.begin(), f.T.begin() + f.stages);
+ApproachBounds chain_bounds(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to) {
+    const FilterTimes& f = chain.filters();  // T1 >= T2 >= ... (FirChain checks)
     const double earliest = from - chain.delay();
     double speeds = 0.0;
     for (const TimedLeg& l : legs) {
@@ -380,7 +393,10 @@ double chain_acceleration_bound(std::span<const TimedLeg> legs, const FirChain& 
         if (l.rise >= earliest && l.rise <= to) speeds += v;
         if (l.rise + l.fall >= earliest && l.rise + l.fall <= to) speeds += v;
     }
-    return speeds / longest;
+    ApproachBounds b;
+    b.acceleration = speeds / f.T[0];
+    b.jerk = f.stages > 1 ? speeds / (f.T[0] * f.T[1]) : HUGE_VAL;
+    return b;
 }
 
 double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,

@@ -141,11 +141,13 @@ search::Probe PaperPlanner::feasible(const Leg& leg, double corner_epsilon, bool
         const LimitCheck l = sweep_.check(legs_, std::max(c.rise, 0.0), c.finish(), limits_, parameters_.period);
         if (!l.ok) return {false, -1.0};
     }
-    // How far a chord between samples can stray from the path near `guess` (closest_approach's sag):
-    // Newton moves at most 24 periods, a chord spans one more.
-    auto sag_near = [&](double guess) {
+    // What bounds the motion near `guess` (closest_approach's sag): Newton moves at most 24
+    // periods, a chord spans one more.
+    auto bounds_near = [&](double guess, double limit) {
         const double period = parameters_.period;
-        return period * period / 8.0 * chain_acceleration_bound(legs_, *chain_, guess - 25.0 * period, guess + 25.0 * period);
+        ApproachBounds b = chain_bounds(legs_, *chain_, guess - 25.0 * period, guess + 25.0 * period);
+        b.enough = b.too_far = limit;
+        return b;
     };
     double margin = 1.0;
     auto approach_ok = [&](std::size_t leg_index, double guess, double epsilon) {
@@ -155,7 +157,7 @@ search::Probe PaperPlanner::feasible(const Leg& leg, double corner_epsilon, bool
         const double error = parameters_.tolerance_meaning == ToleranceMeaning::contour
                                  ? contour_error(legs_, leg_index, guess, td, parameters_.period)
                                  : closest_approach(legs_, leg_index, guess, parameters_.period, clock_phases,
-                                                    sag_near(guess), limit, limit)
+                                                    bounds_near(guess, limit))
                                        .distance;
         if (limit > 0.0) margin = std::min(margin, (limit - error) / limit);
         return error <= limit;

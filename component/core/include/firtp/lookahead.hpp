@@ -325,7 +325,7 @@ private:
     Timeline* timeline_;
     double max_width_ = 0.0;
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
-    double sag_ = 0.0;         // how far a chord of the samples strays from the path, within the machine's limits
+    double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double rate_ = 1.0;
     double max_rate_ = 1.0;
     bool held_ = false;

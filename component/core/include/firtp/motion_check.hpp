@@ -104,22 +104,30 @@ struct Approach {
 
 constexpr int sampled_chords = 3;
 
+// What closest_approach may lean on to spare sampling the chords between the samples. A chord
+// strays from the path it spans by at most period^2 / 8 |a|max over its period.
+struct ApproachBounds {
+    double acceleration = HUGE_VAL;  // |a| near the approach, e.g. the limits the sweep held
+    double jerk = HUGE_VAL;          // |j| near it: |a| within a period of the approach from the one there
+    double enough = 0.0;             // an answer at most this passes: where the bound does, it is the answer
+    double too_far = HUGE_VAL;       // a smooth approach beyond this fails whatever the chords (returned as it is)
+};
+
 // An upper bound of the closest approach of the path to the corner point at the end of
 // legs[corner], searched from time `guess`; samples at t = k period, or with `phases` > 1 the worst
 // of the sample grids shifted by 1 / phases of a period (a scaled clock samples off the grid).
-// `sag`: where the path's acceleration is known to stay within limits (the limit sweep passed), a
-// chord of the samples strays at most sag = period^2 / 8 |a|max from the path it spans; where the
-// smooth approach plus sag is `enough`, that bound is the answer and the chords are not sampled.
-// Where the smooth approach alone is beyond `too_far`, no chord brings the answer back: it is
-// returned as it is (a lower bound then), the chords not sampled.
+// With `bounds`: where the guess's own distance, or the smooth approach's, plus the chords' sag is
+// `enough`, that is the answer (every point of the path is at least as far as the closest, and the
+// chord across any time is within the sag of the path there); nothing is sampled then.
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period,
-                          int phases = 1, double sag = HUGE_VAL, double enough = 0.0, double too_far = HUGE_VAL);
+                          int phases = 1, const ApproachBounds& bounds = {});
 
-// An upper bound of |acceleration| within [from, to] of legs whose steps are all smoothed by
-// `chain` (the paper's mode): a step acts for Td from its kernel's start, and the chain's density
-// is at most 1 / T of its longest filter (a moving average of anything is), so |a| <= sum |v| / T_max
-// over the steps that start within [from - Td, to]. closest_approach's sag with no limits to lean on.
-double chain_acceleration_bound(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to);
+// |acceleration| and |jerk| of legs whose steps are all smoothed by `chain` (the paper's mode),
+// bounded within [from, to]: a step acts for Td from its kernel's start; the chain's density is at
+// most 1 / T1 (a moving average of anything is) and its slope at most 1 / (T1 T2) (jerk: none with
+// one stage), T1 >= T2 its longest filters. So |a| <= sum |v| / T1 over the steps that start
+// within [from - Td, to], and |j| <= that sum / (T1 T2).
+ApproachBounds chain_bounds(std::span<const TimedLeg> legs, const FirChain& chain, double from, double to);
 
 // The largest distance from the programmed path (the legs commanded nearby, as straight
 // segments) of the samples (t = k period) within `width` / 2 of time `at`, the corner at the end
