@@ -69,12 +69,14 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
     jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
-    double machine_acc = 0.0;  // |a| the limit sweep lets through (its slack is 1e-8 of a limit)
+    double machine_acc = 0.0, machine_jerk = 0.0;  // |a|, |j| the limit sweep lets through (its slack is 1e-8 of a limit)
     for (int i = 0; i < machine_.axes; ++i) {
-        const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6);
+        const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6), j = machine_.axis[i].max_jerk * (1.0 + 1e-6);
         if (a > 0.0) machine_acc += a * a;
+        machine_jerk = j > 0.0 ? machine_jerk + j * j : HUGE_VAL;  // an axis without a jerk limit: none
     }
     machine_acceleration_ = std::sqrt(machine_acc);
+    machine_jerk_ = std::sqrt(machine_jerk);
     legs_.reserve(3 * segments_.size() + 64);
     leg_of_.resize(segments_.size());
     when_.resize(segments_.size());

@@ -350,12 +350,14 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     double end = enter_[first];
     double width = 0.0;  // the widest kernel of these legs: the reach of a change among them
     bool sharp = false;  // a step without stages jumps in velocity: no acceleration bounds its chords
+    bool one_stage = false;  // ... one stage jumps in acceleration: no jerk bounds it
     const std::size_t legs = last < count_ ? leg_of_[last - 1] + 1 : legs_.size();
     for (std::size_t k = 0; k < legs; ++k) {
         const TimedLeg& leg = legs_[k];
         end = std::max(end, leg.finish());
         width = std::max({width, leg.rising.width(), leg.falling.width()});
         sharp = sharp || leg.rising.width() == 0.0 || leg.falling.width() == 0.0;
+        one_stage = one_stage || !(leg.rising.b > 1e-9 * leg.rising.a) || !(leg.falling.b > 1e-9 * leg.falling.a);
     }
     max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
@@ -398,7 +400,8 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             // chords' sag is bounded by the limits it held.
             const double period = parameters_.period;
             ApproachBounds bounds;
-            if (!sharp && when_[i] - 32.0 * period >= begin) bounds = {machine_acceleration_, HUGE_VAL, s.tolerance * (1.0 - error_margin)};
+            if (!sharp && when_[i] - 32.0 * period >= begin)
+                bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - error_margin)};
             const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];

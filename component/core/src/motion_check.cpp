@@ -312,26 +312,14 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases,
                           const ApproachBounds& bounds) {
     Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
-    // How far the chord across time t strays from the path at most, given |a| there.
     const double sag = period * period / 8.0 * bounds.acceleration;
-    auto sag_at = [&](double acceleration) { return std::min(sag, period * period / 8.0 * (acceleration + bounds.jerk * period)); };
     // Any point of the path is at least as far from the corner as the closest: where the guess
-    // itself is close enough, so is the approach. (With a jerk bound the state there tightens the
-    // sag, and Newton starts from it.)
-    const bool by_jerk = std::isfinite(bounds.jerk);
-    AxisState at_guess;
+    // itself is close enough, so is the approach.
     if (bounds.enough > 0.0) {
-        double d = 0.0, near = sag;
-        if (by_jerk) {
-            at_guess = relative_state(legs, corner, guess);
-            d = at_guess.position.norm();
-            near = sag_at(at_guess.acceleration.norm());
-        } else {
-            d = relative_position(legs, corner, guess).norm();
-        }
-        if (d + near <= bounds.enough) {
+        const double d = relative_position(legs, corner, guess).norm();
+        if (d + sag <= bounds.enough) {
             best.smooth = d;
-            best.sampled = best.distance = d + near;
+            best.sampled = best.distance = d + sag;
             best.latest = guess + period;
             return best;
         }
@@ -339,7 +327,7 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     double t = guess, acceleration = HUGE_VAL;  // |a| at the best point
     for (int i = 0; i < 6; ++i) {
         best.latest = std::max(best.latest, t);
-        const AxisState s = i == 0 && by_jerk && bounds.enough > 0.0 ? at_guess : relative_state(legs, corner, t);
+        const AxisState s = relative_state(legs, corner, t);
         const double d = s.position.norm();
         if (d < best.smooth) best.smooth = d, best.time = t, acceleration = s.acceleration.norm();
         // Newton on (x - P) . v = 0, the derivative of |x - P|^2 / 2.
@@ -358,7 +346,7 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
     // The drives go straight from sample to sample (t = (k + phase) period): the chords around
     // the approach, for each phase the worst. The chord across the approach's time is within the
     // sag of the path there, whatever the phase (|a| over its period from the one at the approach).
-    const double near = sag_at(acceleration);
+    const double near = std::min(sag, period * period / 8.0 * (acceleration + bounds.jerk * period));
     if (best.smooth + near <= bounds.enough) {
         best.sampled = best.smooth + near;
         best.distance = best.sampled;

@@ -326,6 +326,7 @@ private:
     double max_width_ = 0.0;
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
+    double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
     double rate_ = 1.0;
     double max_rate_ = 1.0;
     bool held_ = false;
