@@ -234,6 +234,8 @@ TEST(RandomMachines, HoldResumeAndAbortKeepLimitsToleranceAndStopBound) { check_
 TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 480, true, true); }
 
 // Programs of those soaks that failed once, each alone (seed, index in its sequence):
+// - 56/634: a new rate while a resume was still being retried kept the hold's braking (its plan
+//   restored from before the resume): braked to rest, and never started again.
 // - 47/393: not the plan; the third differences of positions rounded to doubles at a 0.25 ms
 //   period (difference_noise).
 // - 34/1723 (and 33/1222, 37/207, 38/858, 36/1423): held, the check also summed the legs after
@@ -251,7 +253,7 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 TEST(RandomMachines, HoldResumeRegressions) {
     const std::pair<std::uint64_t, int> programs[] = {{34, 1723}, {33, 1222}, {37, 207}, {38, 858}, {36, 1423},
                                                       {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363},
-                                                      {41, 404}, {35, 1070}, {47, 393}};
+                                                      {41, 404}, {35, 1070}, {47, 393}, {56, 634}};
     for (const auto& [seed, index] : programs) {
         SCOPED_TRACE("seed " + std::to_string(seed) + ", program " + std::to_string(index));
         check_rate_changes(seed, 0, true, true, index);

@@ -694,7 +694,10 @@ void Lookahead::set_rate(double rate) {
     const bool hold = rate == 0.0;
     if (hold == held_ && (hold || rate == rate_)) return;
     if (!hold) rate_ = rate;
-    const bool resumed = held_ && !hold;
+    // A resume whose plan has not passed yet (retried at each tick) left the hold's braking in the
+    // accepted plan: a new rate before it passes resumes too (seed 56, program 634: braked to rest
+    // and never started again).
+    const bool resumed = !hold && (held_ || hold_remnants());
     held_ = hold;
     retry_ = false;
     if (count_ > 0) replan_from_front(resumed);
@@ -723,6 +726,12 @@ void Lookahead::insert_after(std::size_t i, const Segment& s) {
 void Lookahead::erase(std::size_t i) {
     for (std::size_t k = i; k + 1 < count_; ++k) seg(k) = seg(k + 1);
     --count_;
+}
+
+bool Lookahead::hold_remnants() const {
+    for (std::size_t i = 0; i < count_; ++i)
+        if (seg(i).brake || seg(i).hold_split || seg(i).hold_end) return true;
+    return false;
 }
 
 std::size_t Lookahead::hold_stop_index() const {

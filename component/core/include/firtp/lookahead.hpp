@@ -306,6 +306,7 @@ private:
     void place_hold_stop();
     std::size_t hold_stop_index() const;  // the segment the hold's stop ends; count_ if none
     bool hold_stop_placed() const { return hold_stop_index() < count_; }
+    bool hold_remnants() const;  // a segment still braking for, split by or ending at a hold's stop
     void replan_from_front(bool resuming);  // after a change of rate (undoing the hold's stop)
     void unsplit();  // resume before the hold's stop began: the split block is whole again
     void take_snapshot();
