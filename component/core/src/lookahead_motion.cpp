@@ -480,6 +480,9 @@ void Lookahead::replan(std::size_t first) {
             }
             backward(count_ - 1);
             from = count_ >= 2 ? count_ - 2 : 0;
+            // At rest, a plan restored from a hold brakes to a standstill and cannot start again
+            // (machine 61, program 1689): nothing is under way to keep, so from rest again.
+            if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
             forward(from);
             for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true;
             break;
