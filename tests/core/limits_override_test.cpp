@@ -87,15 +87,6 @@ std::vector<std::pair<int, double>> rate_events(std::mt19937_64& rng, int moving
     return events;
 }
 
-// How far the samples' `order`-th differences over period^order can read off from rounding alone:
-// positions are sums over many legs, good to about 1e-14 of their size, and the differences'
-// coefficients sum to 2^order (seed 47, program 393 at a 0.25 ms period: a third difference of
-// 65037.9457 on a jerk limit of 65037.8728, the samples' own jerk exactly at it; noise 0.26).
-double difference_noise(const std::vector<AxisState>& samples, int axis, double period, int order) {
-    double largest = 0.0;
-    for (const AxisState& s : samples) largest = std::max(largest, std::abs(s.position[axis]));
-    return std::ldexp(1e-14 * largest, order) / std::pow(period, order);
-}
 
 // `holds`: rate 0 (hold), resumes and aborts among the rate changes.
 // `jerk`: check the jerk limit too. `only` >= 0: that program of the sequence alone.
@@ -132,10 +123,10 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
                 }
                 }
                 ASSERT_LE(m.max_velocity[a], l.max_velocity * slack) << "axis " << a;
-                ASSERT_LE(m.max_acceleration[a], l.max_acceleration * slack + difference_noise(r.samples, a, p.period, 2))
+                ASSERT_LE(m.max_acceleration[a], l.max_acceleration * slack + test::difference_noise(r.samples, a, p.period, 2))
                     << "axis " << a;
                 if (jerk && l.max_jerk > 0.0) {
-                    ASSERT_LE(m.max_jerk[a], l.max_jerk * slack + difference_noise(r.samples, a, p.period, 3)) << "axis " << a;
+                    ASSERT_LE(m.max_jerk[a], l.max_jerk * slack + test::difference_noise(r.samples, a, p.period, 3)) << "axis " << a;
                 }
                 worst = std::max(worst, m.max_acceleration[a] / l.max_acceleration);
             }
