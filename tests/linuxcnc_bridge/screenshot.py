@@ -102,7 +102,13 @@ def main():
                 os.chown(os.path.join(root, name), uid, gid)
         xvfb = subprocess.Popen(["Xvfb", display, "-screen", "0", "1920x1080x24", "-ac", "-nolisten", "tcp"],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        time.sleep(1)
+        # Until the display answers (a fixed second was not always enough on a loaded machine:
+        # lcm-spy, started at once, could not open it).
+        for _ in range(300):
+            if subprocess.run(["xwininfo", "-root", "-display", display], stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL).returncode == 0:
+                break
+            time.sleep(0.1)
         env = dict(os.environ, WORK=work, CONFIG=config, INI=ini, AS_USER=" ".join(prefix), DISPLAY=display,
                    JAR=a.jar, ROOT=ROOT, AT=a.at)
         subprocess.run(["unshare", "-n", "bash", "-c", SESSION], env=env, timeout=400)
