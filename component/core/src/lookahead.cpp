@@ -69,7 +69,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
     jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
-    double machine_acc = 0.0, machine_jerk = 0.0;  // |a|, |j| the limit sweep lets through (its slack is 1e-8 of a limit)
+    double machine_acc = 0.0, machine_jerk = 0.0;  // |a|, |j| the limit sweep lets through (its slack is 1e-7 of a limit)
     for (int i = 0; i < machine_.axes; ++i) {
         const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6), j = machine_.axis[i].max_jerk * (1.0 + 1e-6);
         if (a > 0.0) machine_acc += a * a;

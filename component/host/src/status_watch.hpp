@@ -28,10 +28,12 @@ private:
     std::string previous_text_;
     std::string error_;
     // The tick of the first status in a row that showed the component idle with nothing queued
-    // (-1: none): an end is taken from the next one, of a later period. The bridge reads the
+    // (-1: none): an end is taken from the next one, of a later period. A bridge reads the
     // component's pins one by one: between two of them the component may take the last blocks
     // from its stream and not yet say so, and one status reads idle and empty with every block
-    // sent (firtp_config_host_diamond ended LinuxCNC after 0.2 s of 0.8).
+    // sent (firtp_config_host_diamond ended LinuxCNC after 0.2 s of 0.8). firtp-lcm-bridge now
+    // counts those blocks itself (Bridge::component_depth, from its axis-state stream); this
+    // stays for a status that cannot (no axis-state stream, a bridge of an older build).
     std::int64_t settled_tick_ = -1;
 };
 
