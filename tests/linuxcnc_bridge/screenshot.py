@@ -41,6 +41,15 @@ for _ in $(seq 900); do
 done
 sleep 3
 echo "AXIS up at $(date +%T)" >> "$WORK/times.log"
+if ! kill -0 $spy 2> /dev/null; then  # lcm-spy could not open the display at its start: once more, logged
+  echo "lcm-spy had exited; started again at $(date +%T)" >> "$WORK/times.log"
+  mv "$WORK/lcm-spy.log" "$WORK/lcm-spy-first.log"
+  FIRTP_LCM_TYPES_JAR="$JAR" setsid "$ROOT/lcm-types/lcm-spy.sh" > "$WORK/lcm-spy.log" 2>&1 & spy=$!
+  for _ in $(seq 300); do
+    xwininfo -root -tree -display "$DISPLAY" 2> /dev/null | grep -q 'LCM Spy' && break
+    sleep 0.1
+  done
+fi
 (cd "$CONFIG" && $AS_USER env HOME="$WORK" PATH="$CONFIG/bin:$PATH" timeout 120 /usr/bin/python3 bin/firtp-headless -ini "$INI") > "$WORK/driver.log" 2>&1 & driver=$!
 for _ in $(seq 600); do
   line=$($AS_USER env HOME="$WORK" halcmd -s getp motion.program-line 2> /dev/null || echo 0)
@@ -100,7 +109,9 @@ def main():
         for root, dirs, files in os.walk(work):
             for name in dirs + files + [""]:
                 os.chown(os.path.join(root, name), uid, gid)
-        xvfb = subprocess.Popen(["Xvfb", display, "-screen", "0", "1920x1080x24", "-ac", "-nolisten", "tcp"],
+        # -noreset: by default Xvfb resets when its last client leaves, so the probe below closing its
+        # connection reset the server just as lcm-spy connected ("Can't connect to X11 window server").
+        xvfb = subprocess.Popen(["Xvfb", display, "-screen", "0", "1920x1080x24", "-ac", "-nolisten", "tcp", "-noreset"],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         # Until the display answers (a fixed second was not always enough on a loaded machine:
         # lcm-spy, started at once, could not open it).
@@ -130,11 +141,12 @@ def main():
         else:
             problems.append("no screenshot")
         if problems:
-            for name in ("linuxcnc.log", "lcm-spy.log"):
+            for name in ("linuxcnc.log", "lcm-spy-first.log", "lcm-spy.log"):
                 path = os.path.join(work, name)
                 if os.path.exists(path):
                     print("---- " + name)
-                    print("".join(open(path).readlines()[-25:]))
+                    lines = open(path).readlines()
+                    print("".join(lines if len(lines) <= 40 else lines[:10] + ["...\n"] + lines[-25:]))
     finally:
         if lcnc_run.hal_running():
             subprocess.run(prefix + ["env", "HOME=" + work, "halrun", "-U"], cwd=work, timeout=30,
