@@ -29,7 +29,8 @@ int plan_command(std::span<const std::string> args) {
     std::vector<std::filesystem::path> written;
     {
         ProgressLine progress("plan", run.points.size() - 1);
-        PlanSink sink(run, outputs.csv(), &progress, options.report.has_value());  // --report: keeps the samples
+        PlanSink sink(run, outputs.csv(), &progress, options.report.has_value(),  // --report: keeps the samples
+                      options.plot.has_value());
         plan_program(run, sink);
         sink.finish();
         progress.clear();

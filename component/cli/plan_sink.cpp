@@ -4,8 +4,8 @@
 
 namespace firtp::cli {
 
-PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples)
-    : run_(run), progress_(progress), keep_(keep_samples) {
+PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples, bool plot)
+    : run_(run), progress_(progress), keep_(keep_samples), plot_on_(plot) {
     if (!run.corners.empty()) throw std::logic_error("PlanSink: corner reports before the plan");
     if (csv) csv_.emplace(*csv);
     run.corners.clear_errors();
@@ -22,7 +22,7 @@ PlanSink::PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool
 void PlanSink::sample(const AxisState& state) {
     if (csv_) csv_->row(state);
     if (keep_) run_.trajectory.samples.push_back(state);
-    plot_.add(state);
+    if (plot_on_) plot_.add(state);
     measure_->add(state);
     if (progress_) progress_->update(measure_->segment(), state.time);
 }
@@ -32,14 +32,14 @@ void PlanSink::corner(const CornerReport& report) {
     run_.corners.push_back(report);
     const std::size_t index = run_.corners.size() - 1;
     if (errors_.empty()) return reports_.push_back(report);
-    plot_.corner_error(index, errors_.front(), report);
+    if (plot_on_) plot_.corner_error(index, errors_.front(), report);
     errors_.pop_front();
 }
 
 void PlanSink::corner_measured(std::size_t index, double error) {
     run_.corners.add_error(error);
     if (reports_.empty()) return errors_.push_back(error);
-    plot_.corner_error(index, error, reports_.front());
+    if (plot_on_) plot_.corner_error(index, error, reports_.front());
     reports_.pop_front();
 }
 

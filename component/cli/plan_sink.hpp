@@ -24,8 +24,8 @@ class PlanSink : public TrajectorySink {
 public:
     // run: prepared (points known), no corner reports yet: they arrive through corner(), from the
     // plan that makes the samples or (run) from the reference plan made alongside the received
-    // samples. csv, progress: may be null.
-    PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples);
+    // samples. csv, progress: may be null. plot: collect the plot's samples (--plot).
+    PlanSink(PlanRun& run, std::ostream* csv, ProgressLine* progress, bool keep_samples, bool plot);
 
     void sample(const AxisState& state) override;
     void corner(const CornerReport& report) override;
@@ -33,7 +33,7 @@ public:
     // The measurement into run (take_measurement); the plot's zooms only where every corner was paired.
     void finish();
 
-    const PlotSamples& plot() const { return plot_; }
+    const PlotSamples& plot() const { return plot_; }  // empty without `plot`
 
 private:
     void corner_measured(std::size_t index, double error);
@@ -42,6 +42,7 @@ private:
     std::optional<CsvWriter> csv_;
     ProgressLine* progress_;
     bool keep_;
+    bool plot_on_;
     std::unique_ptr<PointSource> points_;  // the spool's, when spooled
     std::optional<MeasureStream> measure_;
     PlotSamples plot_;

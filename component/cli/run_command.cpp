@@ -81,7 +81,7 @@ int run_command(std::span<const std::string> args) {
     // The received samples go through what `plan` does with its own, as they arrive: CSV,
     // measurement, plot.
     PlanOutputs outputs(options.plan);
-    PlanSink sink(run, outputs.csv(), nullptr, false);
+    PlanSink sink(run, outputs.csv(), nullptr, false, options.plan.plot.has_value());
     PlanDifference difference;
     host::HostOptions host_options;
     RunChain chain(*lcm, component, run, host_options, [&](const AxisState& s) {

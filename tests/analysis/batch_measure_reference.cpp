@@ -17,17 +17,25 @@ struct Segment {
     double length2 = 0.0;
 };
 
+// Sums in axis order, as the stream does (the same roundings, so the two compare exactly).
+double dot(const AxisVector& x, const AxisVector& y) {
+    double sum = 0.0;
+    for (int a = 0; a < max_axes; ++a) sum += x[a] * y[a];
+    return sum;
+}
+
 double distance(const AxisVector& p, const Segment& s) {
     const AxisVector from_start = p - s.start;
-    const double t = s.length2 > 0.0 ? std::clamp(from_start.dot(s.delta) / s.length2, 0.0, 1.0) : 0.0;
-    return (from_start - t * s.delta).norm();
+    const double t = s.length2 > 0.0 ? std::clamp(dot(from_start, s.delta) / s.length2, 0.0, 1.0) : 0.0;
+    const AxisVector r = from_start - t * s.delta;
+    return std::sqrt(dot(r, r));
 }
 
 Segment chord(const AxisVector& a, const AxisVector& b) {
     Segment s;
     s.start = a;
     s.delta = b - a;
-    s.length2 = s.delta.squaredNorm();
+    s.length2 = dot(s.delta, s.delta);
     return s;
 }
 

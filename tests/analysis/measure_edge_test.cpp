@@ -44,6 +44,29 @@ TEST(MeasureEdge, OffsetFromPolylineIsTheContourError) {
     EXPECT_EQ(m.max_corner_error, 0.0);
 }
 
+// The measurement works over the axes that have moved so far; an axis that first moves late (W,
+// the ninth) still counts, in the path's points and in the samples alike.
+TEST(MeasureEdge, AnAxisThatMovesLateCounts) {
+    AxisVector corner = axes(10), end = axes(10);
+    end(8) = 4.0;
+    const std::vector<AxisVector> points{axes(0), corner, end};
+    // Along X to 9, straight across the corner to W = 1, then on along W; 0.3 off in V on the way.
+    AxisVector cut = axes(10), last = end;
+    cut(8) = 1.0;
+    last(7) = 0.3;
+    std::vector<AxisVector> path;
+    append_line(path, axes(0), axes(9), 90);
+    append_line(path, axes(9), cut, 10);
+    append_line(path, cut, last, 30);
+    path.push_back(last);
+    const Measured m = measure(timed(path, period), points, period);
+    ASSERT_EQ(m.corner_errors.size(), 1u);
+    EXPECT_NEAR(m.corner_errors[0], std::sqrt(0.5), 1e-12);  // the corner from the chord (9, w 0) -> (10, w 1)
+    EXPECT_NEAR(m.max_contour_error, 0.5, 1e-12);  // the chord's middle, (9.5, w 0.5)
+    const Measured off = measure(timed({axes(0), axes(5), corner, last}, period), points, period);
+    EXPECT_NEAR(off.max_contour_error, 0.3, 1e-12);  // V alone is off the path, at the end
+}
+
 TEST(MeasureEdge, NonFiniteSamples) {
     const std::vector<AxisVector> points{axes(0), axes(1)};
     auto samples = timed(on_polyline(points, 10), period);

@@ -16,18 +16,37 @@ namespace {
 using Segment = MeasureStream::Segment;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-double distance(const AxisVector& p, const Segment& s) {
-    const AxisVector from_start = p - s.start;
-    const double t = s.length2 > 0.0 ? std::clamp(from_start.dot(s.delta) / s.length2, 0.0, 1.0) : 0.0;
-    return (from_start - t * s.delta).norm();
+// Over the first `dims` axes only (the others are zero in every point and sample so far: see
+// MeasureStream::widen), summed in axis order.
+template <int Dims>
+double distance_over(const AxisVector& p, const Segment& s, int dims) {
+    const int n = Dims > 0 ? Dims : dims;
+    std::array<double, max_axes> from_start;
+    double along = 0.0;
+    for (int a = 0; a < n; ++a) {
+        from_start[a] = p[a] - s.start[a];
+        along += from_start[a] * s.delta[a];
+    }
+    const double t = s.length2 > 0.0 ? std::clamp(along / s.length2, 0.0, 1.0) : 0.0;
+    double sum = 0.0;
+    for (int a = 0; a < n; ++a) {
+        const double r = from_start[a] - t * s.delta[a];
+        sum += r * r;
+    }
+    return std::sqrt(sum);
 }
 
-Segment chord(const AxisVector& a, const AxisVector& b) {
-    Segment s;
+double distance(const AxisVector& p, const Segment& s, int dims) {
+    return dims <= 3 ? distance_over<3>(p, s, dims) : distance_over<0>(p, s, dims);  // (zeros beyond dims add nothing)
+}
+
+void make_chord(Segment& s, const AxisVector& a, const AxisVector& b, int dims) {
     s.start = a;
-    s.delta = b - a;
-    s.length2 = s.delta.squaredNorm();
-    return s;
+    s.length2 = 0.0;
+    for (int k = 0; k < std::max(dims, 3); ++k) {  // as far as distance() reads
+        s.delta[k] = b[k] - a[k];
+        s.length2 += s.delta[k] * s.delta[k];
+    }
 }
 
 // The caller's points without repeats (zero-length blocks, as the planner skips them, repeat a
@@ -79,8 +98,20 @@ void MeasureStream::start(PointSource& points) {
 
 MeasureStream::~MeasureStream() = default;
 
+void MeasureStream::widen(const AxisVector& x) {
+    for (int a = max_axes - 1; a >= dims_; --a)
+        if (x[a] != 0.0) {
+            dims_ = a + 1;
+            for (auto& c : chords_) c.first = npos;  // made over fewer axes
+            return;
+        }
+}
+
 const AxisVector& MeasureStream::point(std::size_t j) {
-    while (points_base_ + points_.size() <= j) points_.push_back(source_->next());
+    while (points_base_ + points_.size() <= j) {
+        points_.push_back(source_->next());
+        widen(points_.back());
+    }
     return points_[j - points_base_];
 }
 
@@ -138,14 +169,16 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
     tracked = k_;
     if (!p.allFinite()) return;  // reported by Measured::finite
     std::size_t k = k_;
-    // Each segment's distance from p found once for this sample (the scans below overlap).
-    std::array<std::pair<std::size_t, double>, 24> known;
-    std::size_t known_count = 0;
+    // Each segment's distance from p found once for this sample (the scans below overlap), by its
+    // index from k_ - 1 on (no scan looks below that); -1: not yet.
+    std::array<double, 32> known;
+    known.fill(-1.0);
+    const std::size_t known_base = k > 0 ? k - 1 : 0;
     auto distance_to = [&](std::size_t j) {
-        for (std::size_t m = 0; m < known_count; ++m)
-            if (known[m].first == j) return known[m].second;
-        const double dj = distance(p, segment(j));
-        if (known_count < known.size()) known[known_count++] = {j, dj};
+        const std::size_t m = j - known_base;
+        if (m < known.size() && known[m] >= 0.0) return known[m];
+        const double dj = distance(p, segment(j), dims_);
+        if (m < known.size()) known[m] = dj;
         return dj;
     };
     double d = distance_to(k);
@@ -181,7 +214,12 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
 // Distance of interior point j from the chord between samples c and c+1 (the drives go straight
 // from sample to sample).
 double MeasureStream::chord_distance(std::size_t c, std::size_t j) {
-    return distance(point(j), firtp::chord(recent(c), recent(c + 1)));
+    auto& [index, chord] = chords_[c % chords_.size()];  // a chord is asked for by several corners
+    if (index != c) {
+        make_chord(chord, recent(c), recent(c + 1), dims_);
+        index = c;
+    }
+    return distance(point(j), chord, dims_);
 }
 
 void MeasureStream::close_corner(std::size_t j, double error) {
@@ -225,6 +263,7 @@ void MeasureStream::chord(std::size_t c, bool has_next) {
 void MeasureStream::add(const AxisState& sample) {
     const std::size_t n = n_++;
     recent_[n % recent_.size()] = sample.position;
+    widen(sample.position);
     m_.finite = m_.finite && sample.position.allFinite();
     m_.cycle_time = sample.time;
     m_.end_position = sample.position;

@@ -48,6 +48,28 @@ public:
 // bit for bit measure()'s. `points` must outlive the stream; of a PointSource only the points
 // near the tracking are held. `on_corner(index, error)` is told each corner error (index into
 // Measured::corner_errors) as soon as no later sample can change it.
+// A queue that is indexed from its front (cheaper than std::deque's blocks for measure's
+// per-sample lookups); the front's slots are given back in batches.
+template <class T>
+class FrontQueue {
+public:
+    std::size_t size() const { return items_.size() - front_; }
+    bool empty() const { return size() == 0; }
+    T& operator[](std::size_t i) { return items_[front_ + i]; }
+    const T& back() const { return items_.back(); }
+    void push_back(const T& x) { items_.push_back(x); }
+    void pop_front() {
+        if (++front_ >= 256 && 2 * front_ >= items_.size()) {
+            items_.erase(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(front_));
+            front_ = 0;
+        }
+    }
+
+private:
+    std::vector<T> items_;
+    std::size_t front_ = 0;
+};
+
 class MeasureStream {
 public:
     using CornerCallback = std::function<void(std::size_t, double)>;
@@ -66,9 +88,9 @@ public:
     std::size_t segment() const { return k_; }
 
     struct Segment {
-        AxisVector start;
-        AxisVector delta;  // end - start
-        AxisVector unit;   // delta / |delta|
+        AxisVector start = AxisVector::Zero();
+        AxisVector delta = AxisVector::Zero();  // end - start
+        AxisVector unit = AxisVector::Zero();   // delta / |delta|
         double length2 = 0.0;
         double length = 0.0;  // sqrt(length2)
     };
@@ -81,6 +103,7 @@ private:
     double chord_distance(std::size_t c, std::size_t j);
     void start(PointSource& points);
     const AxisVector& point(std::size_t j);  // pulled from the source as needed
+    void widen(const AxisVector& x);         // dims_ covers x's non-zero axes
     void release();                          // drops the points no later step looks at
     void chord(std::size_t c, bool has_next);
     void close_corner(std::size_t j, double error);
@@ -89,7 +112,7 @@ private:
     std::unique_ptr<PointSource> own_;  // over the caller's span
     PointSource* source_ = nullptr;
     std::size_t size_ = 0;               // distinct programmed points
-    std::deque<AxisVector> points_;      // from points_base_ on, as far as pulled
+    FrontQueue<AxisVector> points_;      // from points_base_ on, as far as pulled
     std::size_t points_base_ = 0;
     std::size_t last_ = 0;            // index of the last segment
     double period_;
@@ -103,9 +126,13 @@ private:
     std::size_t k_ = 0;                      // tracking: segment of the newest tracked sample
     double stray_ = 0.0;                     // largest distance of a tracked sample from the path
     double lone_point_ = 0.0;                // a program that never moves: distance from its point
-    std::deque<Segment> window_;             // segments from window_base_ on
+    FrontQueue<Segment> window_;             // segments from window_base_ on
     std::size_t window_base_ = 0;
     std::deque<std::pair<std::size_t, double>> open_;  // corners still taking chords, ascending
+    // Axes 0 .. dims_-1 hold every non-zero coordinate seen so far (distances need no more).
+    int dims_ = 1;
+    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+    std::array<std::pair<std::size_t, Segment>, 4> chords_{{{npos, {}}, {npos, {}}, {npos, {}}, {npos, {}}}};  // by index mod 4
 };
 
 }  // namespace firtp
