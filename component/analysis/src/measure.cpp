@@ -177,7 +177,8 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
     auto distance_to = [&](std::size_t j) {
         const std::size_t m = j - known_base;
         if (m < known.size() && known[m] >= 0.0) return known[m];
-        const double dj = distance(p, segment(j), dims_);
+        const Segment& segment_j = segment(j);  // first: its points may widen dims_
+        const double dj = distance(p, segment_j, dims_);
         if (m < known.size()) known[m] = dj;
         return dj;
     };
@@ -214,12 +215,13 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
 // Distance of interior point j from the chord between samples c and c+1 (the drives go straight
 // from sample to sample).
 double MeasureStream::chord_distance(std::size_t c, std::size_t j) {
+    const AxisVector& q = point(j);  // first: it may widen dims_
     auto& [index, chord] = chords_[c % chords_.size()];  // a chord is asked for by several corners
     if (index != c) {
         make_chord(chord, recent(c), recent(c + 1), dims_);
         index = c;
     }
-    return distance(point(j), chord, dims_);
+    return distance(q, chord, dims_);
 }
 
 void MeasureStream::close_corner(std::size_t j, double error) {
