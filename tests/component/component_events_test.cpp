@@ -197,6 +197,50 @@ TEST(ComponentEvents, AToolChangeWaitsAtRestForToolChanged) {
     EXPECT_EQ(run.out.next_seq, 5u);
 }
 
+// A tool change between exact stops, tool-changed looped back as `firtp run` nets it: the block
+// after the change is the last one the component has (the next change gates the stream), but its
+// exact stop is its own, so it starts at once instead of waiting start_wait for more blocks. Each
+// block starts at most two periods after it does in `firtp plan` (the handshake).
+TEST(ComponentEvents, ABlockBeforeAToolChangeStartsAtOnce) {
+    const std::vector<Block> blocks{move(10, 0, Termination::exact_stop, 1), move(10, 10, Termination::exact_stop, 3),
+                                    move(0, 10, Termination::exact_stop, 5)};
+    Program program;
+    program.block(blocks[0]);
+    program.event(EventKind::tool_change, 2, 2);
+    program.block(blocks[1]);
+    program.event(EventKind::tool_change, 3, 4);
+    program.block(blocks[2]);
+    program.event(EventKind::program_end, 0, 6);
+    const ComponentSettings settings = limit_settings();
+    Servo run(settings);
+    run.stream.records = program.records;
+    for (int k = 0; k < 5000; ++k) {
+        run.in.events.tool_changed = run.out.events.tool_change;  // net tool-change tool-changed
+        run.ticks(1);
+    }
+    ASSERT_TRUE(run.at(blocks[2].target));
+    const Trajectory plan = plan_trajectory(settings.planner, AxisVector::Zero(), blocks);
+    // When each block's motion starts (the first sample that leaves its start point), in ticks.
+    auto starts = [&](const std::vector<AxisState>& samples) {
+        std::vector<std::size_t> out;
+        AxisVector from = AxisVector::Zero();
+        std::size_t b = 0;
+        for (std::size_t k = 0; k < samples.size() && b < blocks.size(); ++k) {
+            if (samples[k].position != from && (out.size() == b)) out.push_back(k);
+            if (samples[k].position == blocks[b].target && samples[k].velocity.norm() == 0.0) from = blocks[b++].target;
+        }
+        return out;
+    };
+    const std::vector<std::size_t> planned = starts(plan.samples), ran = starts(run.samples);
+    ASSERT_EQ(planned.size(), 3u);
+    ASSERT_EQ(ran.size(), 3u);
+    EXPECT_EQ(ran[0], planned[0]);
+    for (std::size_t b = 1; b < 3; ++b) {
+        EXPECT_GE(ran[b], planned[b] + (ran[b - 1] - planned[b - 1])) << "block " << b;
+        EXPECT_LE(ran[b], planned[b] + (ran[b - 1] - planned[b - 1]) + 2) << "block " << b << ": waited for more blocks";
+    }
+}
+
 TEST(ComponentEvents, APauseWaitsForResumeAndM1OnlyWithOptionalStop) {
     Program program;
     program.block(move(10, 0, Termination::exact_stop, 1));

@@ -274,8 +274,10 @@ void Lookahead::classify(std::size_t i) {
     s.dense = s.short_block && in_window && !s.sparse_only &&
               ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : sparse_;
-    // (A stop after it, not only the end of the blocks known so far: the next block would undo it.)
-    if (s.dense && entry_is_stop(i) && i + 1 < count_ && s.kind == Kind::stop) s.regime = alone_regime(i, dense);
+    // (A stop after it, not only the end of the blocks known so far: the next block would undo it.
+    // An exact stop stays: the block is planned as it will be, before the next one comes.)
+    if (s.dense && entry_is_stop(i) && (i + 1 < count_ || s.exact_stop) && s.kind == Kind::stop)
+        s.regime = alone_regime(i, dense);
     s.alpha = box(s.u, s.regime);
 }
 
@@ -518,7 +520,7 @@ std::size_t Lookahead::backward(std::size_t last) {
         bool exit_end = false;
         if (exit_is_stop(i)) {
             exit_max = s.dense ? std::min(s.feed_max, room_cap(i, s.alpha)) : s.feed_max;
-            exit_end = i + 1 == count_ && !finished_;
+            exit_end = i + 1 == count_ && !finished_ && !s.exact_stop;  // an exact stop is its own, not the end's
         } else {
             const Segment& n = seg(i + 1);
             if (s.kind == Kind::corner) {
