@@ -122,6 +122,8 @@ TEST(EventMessages, TheHostSendsTheProgramsEventsBetweenItsBlocks) {
     options.program_id = 9;
     std::int64_t periods = 0;
     options.clock = [&periods] { return host::Clock::time_point(std::chrono::milliseconds(periods)); };
+    std::vector<std::int64_t> told;  // what the host hears of them (firtp host prints each)
+    options.on_event_reached = [&told](const firtp_lcm::event_t& e) { told.push_back(e.seq); };
     host::Host host(*chain.lcm, program, options);
     for (; periods < 5000 && host.result() == host::Result::running; ++periods) {
         host.step();
@@ -135,6 +137,7 @@ TEST(EventMessages, TheHostSendsTheProgramsEventsBetweenItsBlocks) {
     // seq 1 X10, 2 dwell, 3 M8, 4 T2, 5 M6, 6 Y10, 7 M9 (of M2), 8 end: each event once, in order.
     const std::int64_t expected[] = {2, 3, 4, 5, 7, 8};
     for (std::size_t i = 0; i < chain.reached.size(); ++i) EXPECT_EQ(chain.reached[i].seq, expected[i]);
+    EXPECT_EQ(told, std::vector<std::int64_t>(std::begin(expected), std::end(expected)));
     EXPECT_EQ(chain.reached[0].kind, firtp_lcm::event_t::DWELL);
     EXPECT_EQ(chain.reached[5].kind, firtp_lcm::event_t::PROGRAM_END);
     const double rest = chain.rest_at(10, 0);

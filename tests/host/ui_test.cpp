@@ -125,6 +125,38 @@ TEST(TerminalUiTest, ReadsCommandLinesFromAPipe) {
     std::fclose(output);
 }
 
+TEST(UiEvents, Text) {
+    firtp_lcm::event_t e{};
+    e.line = 14;
+    e.kind = firtp_lcm::event_t::TOOL_CHANGE;
+    e.value = 2;
+    EXPECT_EQ(event_text(e), "line 14: tool_change T2 reached");
+    e.kind = firtp_lcm::event_t::SPINDLE_SPEED;
+    e.value = 12000;
+    EXPECT_EQ(event_text(e), "line 14: spindle_speed S12000 reached");
+    e.kind = firtp_lcm::event_t::DWELL;
+    e.value = 0.25;
+    EXPECT_EQ(event_text(e), "line 14: dwell 0.25 s reached");
+    e.kind = firtp_lcm::event_t::PAUSE;
+    EXPECT_EQ(event_text(e), "line 14: pause reached");
+}
+
+TEST(TerminalUiTest, EachReachedEventOnALineOfItsOwn) {
+    std::FILE* output = std::tmpfile();
+    {
+        TerminalUi ui(UiOptions{-1, output});
+        firtp_lcm::event_t e{};
+        e.line = 3;
+        e.kind = firtp_lcm::event_t::FLOOD_ON;
+        ui.event(e);
+        e.line = 9;
+        e.kind = firtp_lcm::event_t::PROGRAM_END;
+        ui.event(e);
+    }
+    EXPECT_EQ(contents(output), "firtp host: line 3: flood_on reached\nfirtp host: line 9: program_end reached\n");
+    std::fclose(output);
+}
+
 TEST(TerminalUiTest, OneLinePerTenPercentWhenNotATerminal) {
     std::FILE* output = std::tmpfile();
     {

@@ -162,7 +162,9 @@ struct Host::State {
             ++statistics.corrupted_dropped;
             return;
         }
-        if (received.message.program == program_id) ++statistics.events_reached;
+        if (received.message.program != program_id) return;
+        ++statistics.events_reached;
+        if (options.on_event_reached) options.on_event_reached(received.message);
     }
 
     void on_status(const status_t* status) {

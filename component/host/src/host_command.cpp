@@ -5,6 +5,7 @@
 #include <firtp/messages.hpp>
 
 #include <optional>
+#include <vector>
 
 #include <poll.h>
 
@@ -54,6 +55,8 @@ int run_host_command(const HostCommandOptions& options) {
     const bool recording = static_cast<bool>(options.record_axis_state);
     HostOptions host_options = options.host;
     host_options.on_axis_state = options.record_axis_state;
+    std::vector<firtp_lcm::event_t> reached;  // shown by the UI after each step
+    host_options.on_event_reached = [&reached](const firtp_lcm::event_t& e) { reached.push_back(e); };
     Host host(*lcm, program, host_options);
 
     const Clock::time_point started = Clock::now();
@@ -63,6 +66,8 @@ int run_host_command(const HostCommandOptions& options) {
         std::optional<Clock::time_point> quit_by;  // set by 'q' or a signal
         for (;;) {
             result = host.step();
+            for (const firtp_lcm::event_t& e : reached) ui.event(e);
+            reached.clear();
             const Clock::time_point now = Clock::now();
             ui.show(host.progress(), now);
             if (result != Result::running || (quit_by && now >= *quit_by)) break;

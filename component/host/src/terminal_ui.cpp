@@ -113,6 +113,13 @@ void TerminalUi::show(const Progress& progress, Clock::time_point now) {
     std::fflush(options_.output);
 }
 
+void TerminalUi::event(const firtp_lcm::event_t& event) {
+    if (!options_.output) return;
+    std::fprintf(options_.output, "%sfirtp host: %s\n", line_open_ ? "\r\033[K" : "", event_text(event).c_str());
+    std::fflush(options_.output);
+    line_open_ = false;  // the live line comes back at the next show()
+}
+
 void TerminalUi::finish(const Progress& progress) {
     if (!options_.output || !live_) return;
     std::fprintf(options_.output, "\r%s\033[K\n", progress_text(progress).c_str());

@@ -1,6 +1,8 @@
 // The text side of the operator interface: keys, command lines, the progress line.
 #include <firtp/host_ui.hpp>
 
+#include <firtp/program_event.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -20,6 +22,20 @@ int percent(std::size_t part, std::size_t whole) {
 }
 
 }  // namespace
+
+std::string event_text(const firtp_lcm::event_t& event) {
+    const auto kind = static_cast<EventKind>(event.kind);
+    std::string text = "line " + std::to_string(event.line) + ": " + std::string(event_name(kind));
+    char value[48] = "";
+    switch (kind) {
+        case EventKind::spindle_speed: std::snprintf(value, sizeof value, " S%g", event.value); break;
+        case EventKind::tool_select:
+        case EventKind::tool_change: std::snprintf(value, sizeof value, " T%g", event.value); break;
+        case EventKind::dwell: std::snprintf(value, sizeof value, " %g s", event.value); break;
+        default: break;
+    }
+    return text + value + " reached";
+}
 
 std::optional<UiCommand> command_for_key(char key) {
     using Kind = UiCommand::Kind;

@@ -7,6 +7,7 @@
 #include <firtp/gcode.hpp>
 #include <firtp/trajectory.hpp>
 #include <firtp_lcm/axis_state_t.hpp>
+#include <firtp_lcm/event_t.hpp>
 #include <firtp_lcm/status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
@@ -36,6 +37,7 @@ struct HostOptions {
     bool record_axis_states = false;  // keep every FIRTP_AXIS_STATE message (axis_states())
     // Called with every intact FIRTP_AXIS_STATE message as it arrives (in step()), kept or not.
     std::function<void(const firtp_lcm::axis_state_t&)> on_axis_state;
+    std::function<void(const firtp_lcm::event_t&)> on_event_reached;  // this program's, as motion reaches them
     std::int64_t program_id = 0;      // 0: microseconds of the system clock
     std::function<Clock::time_point()> clock;  // empty: Clock::now (tests inject a fake clock)
 };

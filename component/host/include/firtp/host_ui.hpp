@@ -35,6 +35,9 @@ double stepped_feed(double current, int steps, double max_feed);
 // "acknowledged 45%, executed 40% (48/120 blocks), line 57, moving, feed 100%".
 std::string progress_text(const Progress& progress);
 
+// "line 14: tool_change T2 reached" (kinds as `firtp plan` names them; rpm, tool or seconds).
+std::string event_text(const firtp_lcm::event_t& event);
+
 struct UiOptions {
     int input_fd = 0;                       // -1: no operator input
     std::FILE* output = stderr;             // progress; a TTY gets a live line
@@ -57,6 +60,7 @@ public:
     // Live line on a TTY (rate-limited); otherwise one line per 10 % of blocks executed.
     void show(const Progress& progress, Clock::time_point now);
     void finish(const Progress& progress);      // ends the live line
+    void event(const firtp_lcm::event_t& event);  // a line of its own (event_text)
 
 private:
     void restore_terminal();
