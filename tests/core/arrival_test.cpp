@@ -2,15 +2,16 @@
 // programs fed a few blocks a period, as firtp.so and firtp_tp take them, against the whole
 // program known at once (programs that fit the window: a full window commits when it fills).
 //
-// DISABLED: a known defect, found 2026-11-27 and not fixed. It fails on 4 to 6 of 10 seeds
-// (FIRTP_RANDOM_SEED 1, 2, 3, 5, 7) with 1 or 2 blocks a period (FIRTP_PER_PERIOD), e.g. seed 1
+// DISABLED: a known defect, found 2026-11-27 and not fixed. It fails on 8 of 14 seeds
+// (FIRTP_RANDOM_SEED 1, 2, 3, 5, 7, 12, 13, 14) with 1 or 2 blocks a period (FIRTP_PER_PERIOD), e.g. seed 1
 // program 48: 34 blocks, all known by tick 17, the motions part at tick 107 and the fed one ends
 // 27 periods later. Found: the first block's start step freezes once its exit bound is its own
 // (final_for_start), with 2 blocks known; but the second block's classification (dense or not)
 // depends on the junction after it, and with it the first junction's regime and so the first
 // block's speed (seed 2 program 20: 32.61 mm/s fed, 33.90 known at once). Requiring more blocks
-// before a start (or a real stop among them) removes most: 4 more blocks passed 9 of 10 seeds
-// here (not all: seed 13 program 148); a rule that follows the classification's reach is needed.
+// before a start (or a real stop among them) removes most: of seeds 1-14, 6 pass now, 11 with 2
+// more blocks, 13 with 4 (not seed 13 program 148); a rule that follows the classification's reach
+// is needed.
 // Run it with
 //   FIRTP_RANDOM_SEED=1 FIRTP_PER_PERIOD=2 core_tests --gtest_also_run_disabled_tests --gtest_filter='Arrival.*'
 #include "support/random_machine.hpp"
