@@ -22,8 +22,9 @@
 //
 // A block's speeds are final once blocks after it can no longer change them (the backward bound
 // at its exit is its own, not the end's): its steps start only then, or when the window is full,
-// or when the motion would otherwise have to start late. So the motion does not depend on when
-// blocks arrive, only on which.
+// or when the motion would otherwise have to start late. So the motion should not depend on when
+// blocks arrive, only on which; it still does where a start freezes before the next block's
+// classification is settled (tests/core/arrival_test.cpp, disabled: a known defect).
 #pragma once
 
 #include <firtp/junction.hpp>
