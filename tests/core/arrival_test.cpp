@@ -10,8 +10,8 @@
 // depends on the junction after it, and with it the first junction's regime and so the first
 // block's speed (seed 2 program 20: 32.61 mm/s fed, 33.90 known at once). Requiring more blocks
 // before a start (or a real stop among them) removes most: of seeds 1-14, 6 pass now, 11 with 2
-// more blocks, 13 with 4 (not seed 13 program 148); a rule that follows the classification's reach
-// is needed.
+// more blocks, 13 with 4 (not seed 13 program 148), 10 waiting until the runs of short blocks at
+// the first two blocks end known; a rule that follows every dependence of the start is needed.
 // Run it with
 //   FIRTP_RANDOM_SEED=1 FIRTP_PER_PERIOD=2 core_tests --gtest_also_run_disabled_tests --gtest_filter='Arrival.*'
 #include "support/random_machine.hpp"
