@@ -87,7 +87,6 @@ std::vector<std::pair<int, double>> rate_events(std::mt19937_64& rng, int moving
     return events;
 }
 
-
 // `holds`: rate 0 (hold), resumes and aborts among the rate changes.
 // `jerk`: check the jerk limit too. `only` >= 0: that program of the sequence alone.
 void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool jerk, int only = -1) {

@@ -42,7 +42,8 @@ TEST_F(OutcomeTest, DoneOnlyOnceEveryBlockHasExecuted) {
 
 // A bridge that reads the component's pins one at a time (firtp-lcm-bridge without its axis-state
 // stream, or of an older build): between two reads the component can take the last blocks from
-// its stream and not yet say so, and one status then reads idle, nothing queued, every block sent. The program is not over until a status of a later period says so too
+// its stream and not yet say so, and one status then reads idle, nothing queued, every block
+// sent. The program is not over until a status of a later period says so too
 // (linuxcnc_bridge.firtp_config_host_diamond: LinuxCNC ended 0.2 s into the 0.8 s diamond).
 TEST_F(OutcomeTest, OneIdleStatusWithBlocksStillQueuedDoesNotEndTheProgram) {
     FakeComponent component(lcm, 32);

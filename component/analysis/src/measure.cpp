@@ -16,6 +16,9 @@ namespace {
 using Segment = MeasureStream::Segment;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+// Distances are taken over at least this many axes (a fixed count the compiler unrolls: X Y Z).
+constexpr int least_dims = 3;
+
 // Over the first `dims` axes only (the others are zero in every point and sample so far: see
 // MeasureStream::widen), summed in axis order.
 template <int Dims>
@@ -37,13 +40,13 @@ double distance_over(const AxisVector& p, const Segment& s, int dims) {
 }
 
 double distance(const AxisVector& p, const Segment& s, int dims) {
-    return dims <= 3 ? distance_over<3>(p, s, dims) : distance_over<0>(p, s, dims);  // (zeros beyond dims add nothing)
+    return dims <= least_dims ? distance_over<least_dims>(p, s, dims) : distance_over<0>(p, s, dims);  // (zeros beyond dims add nothing)
 }
 
 void make_chord(Segment& s, const AxisVector& a, const AxisVector& b, int dims) {
     s.start = a;
     s.length2 = 0.0;
-    for (int k = 0; k < std::max(dims, 3); ++k) {  // as far as distance() reads
+    for (int k = 0; k < std::max(dims, least_dims); ++k) {  // as far as distance() reads
         s.delta[k] = b[k] - a[k];
         s.length2 += s.delta[k] * s.delta[k];
     }
@@ -102,7 +105,7 @@ void MeasureStream::widen(const AxisVector& x) {
     for (int a = max_axes - 1; a >= dims_; --a)
         if (x[a] != 0.0) {
             dims_ = a + 1;
-            for (auto& c : chords_) c.first = npos;  // made over fewer axes
+            for (Chord& c : chords_) c.index = Chord::none;  // made over fewer axes
             return;
         }
 }
@@ -216,12 +219,12 @@ void MeasureStream::track(std::size_t i, const AxisVector& motion) {
 // from sample to sample).
 double MeasureStream::chord_distance(std::size_t c, std::size_t j) {
     const AxisVector& q = point(j);  // first: it may widen dims_
-    auto& [index, chord] = chords_[c % chords_.size()];  // a chord is asked for by several corners
-    if (index != c) {
-        make_chord(chord, recent(c), recent(c + 1), dims_);
-        index = c;
+    Chord& chord = chords_[c % chords_.size()];  // a chord is asked for by several corners
+    if (chord.index != c) {
+        make_chord(chord.segment, recent(c), recent(c + 1), dims_);
+        chord.index = c;
     }
-    return distance(q, chord, dims_);
+    return distance(q, chord.segment, dims_);
 }
 
 void MeasureStream::close_corner(std::size_t j, double error) {

@@ -43,11 +43,6 @@ public:
     virtual AxisVector next() = 0;         // the next point; called at most size() times
 };
 
-// The same measurement, one sample at a time, with state bounded by the path the tool strays
-// over (not by the number of samples): add() every sample in order, then finish(). The result is
-// bit for bit measure()'s. `points` must outlive the stream; of a PointSource only the points
-// near the tracking are held. `on_corner(index, error)` is told each corner error (index into
-// Measured::corner_errors) as soon as no later sample can change it.
 // A queue that is indexed from its front (cheaper than std::deque's blocks for measure's
 // per-sample lookups); the front's slots are given back in batches.
 template <class T>
@@ -70,6 +65,11 @@ private:
     std::size_t front_ = 0;
 };
 
+// The same measurement, one sample at a time, with state bounded by the path the tool strays
+// over (not by the number of samples): add() every sample in order, then finish(). The result is
+// bit for bit measure()'s. `points` must outlive the stream; of a PointSource only the points
+// near the tracking are held. `on_corner(index, error)` is told each corner error (index into
+// Measured::corner_errors) as soon as no later sample can change it.
 class MeasureStream {
 public:
     using CornerCallback = std::function<void(std::size_t, double)>;
@@ -131,8 +131,13 @@ private:
     std::deque<std::pair<std::size_t, double>> open_;  // corners still taking chords, ascending
     // Axes 0 .. dims_-1 hold every non-zero coordinate seen so far (distances need no more).
     int dims_ = 1;
-    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-    std::array<std::pair<std::size_t, Segment>, 4> chords_{{{npos, {}}, {npos, {}}, {npos, {}}, {npos, {}}}};  // by index mod 4
+    // The chords between samples c and c+1 last asked for, by c mod 4 (index: none yet).
+    struct Chord {
+        static constexpr std::size_t none = static_cast<std::size_t>(-1);
+        std::size_t index = none;
+        Segment segment;
+    };
+    std::array<Chord, 4> chords_{};
 };
 
 }  // namespace firtp
