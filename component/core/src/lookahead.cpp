@@ -79,6 +79,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     machine_jerk_ = std::sqrt(machine_jerk);
     legs_.reserve(3 * segments_.size() + 64);
     leg_of_.resize(segments_.size());
+    leg_begin_.resize(segments_.size());
     when_.resize(segments_.size());
     enter_.resize(segments_.size());
     entry_memo_.resize(segments_.size());

@@ -266,6 +266,7 @@ void Lookahead::build_legs(std::size_t first) {
     for (std::size_t i = first; i < count_; ++i) {
         const Segment& s = seg(i);
         enter_[i] = t;
+        leg_begin_[i] = legs_.size();
         Step step = entry_step(i);
         double centre = t, speed = s.a;
         // The leg from the current step to the next, at the current speed.
@@ -305,6 +306,15 @@ bool Lookahead::same_motion(const Segment& s, const Segment& before) {
            s.x1 == before.x1 && s.rest == before.rest && s.next_a == before.next_a && s.kind == before.kind &&
            s.planned_stop == before.planned_stop && s.u == before.u && s.regime.t2 == before.regime.t2 &&
            s.regime.cap == before.regime.cap && s.junction.t2 == before.junction.t2 && s.junction.cap == before.junction.cap;
+}
+
+double Lookahead::first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const {
+    // A segment's steps are the kernels of its legs (a leg rises on one step, falls on the next);
+    // the step entering k is also the falling one of the leg before (k may have none).
+    const std::size_t begin = k > from ? leg_begin_[k] : 0;
+    double earliest = begin > 0 && begin <= legs ? legs_[begin - 1].rise + legs_[begin - 1].fall : infinity;
+    for (std::size_t m = begin; m < legs; ++m) earliest = std::min({earliest, legs_[m].rise, legs_[m].rise + legs_[m].fall});
+    return earliest;
 }
 
 bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) {
@@ -362,9 +372,18 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     max_width_ = std::max(max_width_, width);
     // What ran before now is done (and retired legs are gone from the timeline).
     const double begin = std::max(enter_[first] - max_width_, 0.0);
+    // Planning from `first` changes the steps from the one entering first - 1 on (the junction
+    // fields of first - 1 are set with it, and the junction regime before it). Before the earliest
+    // of their kernels starts, the sums are those an accepted plan's check swept: the sweep starts
+    // there (`begin` reaches the widest kernel of the whole program back, on CAM output with
+    // rapids several times a dense run's). Not from the front, nor over blocks a fallback left
+    // unchecked.
     // Held, the legs after the hold's stop are the resume's plan, not motion: only those up to it
     // (they had cancelled a hold's braking against the resume's start: 2x an axis' acceleration).
-    LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), begin, end, machine_, parameters_.period);
+    bool checked_before = first > from;
+    for (std::size_t i = from; i < first && checked_before; ++i) checked_before = !seg(i).unchecked;
+    const double sweep_from = checked_before ? std::max(begin, first_kernel_start(from, first - 1, legs)) : begin;
+    LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), sweep_from, end, machine_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
     for (std::size_t k = 0; k < legs && limits.ok; ++k)
@@ -383,10 +402,14 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     }
     // Every corner the changed motion can reach. The motion changes from the step entering
     // `changed` on (the legs after it and the junction step before it): nothing moves differently
-    // before its widest kernel starts (2 periods to spare). A corner whose last check looked only
-    // before that passed on this very motion.
-    const double unchanged_until =
-        changed < count_ ? enter_[changed] - 0.5 * width - 2.0 * parameters_.period : infinity;
+    // before its widest kernel starts, nor before the first of their kernels does (2 periods to
+    // spare). A corner whose last check looked only before that passed on this very motion.
+    double unchanged_until = infinity;
+    if (changed < count_) {
+        unchanged_until = enter_[changed] - 0.5 * width;
+        if (changed > from) unchanged_until = std::max(unchanged_until, first_kernel_start(from, changed, legs));
+        unchanged_until -= 2.0 * parameters_.period;
+    }
     for (std::size_t i = from; i + 1 < last; ++i) {
         Segment& s = seg(i);
         if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;

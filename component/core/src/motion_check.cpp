@@ -126,6 +126,7 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
     std::uint32_t e = 0;
     for (const TimedLeg& leg : legs) {
         if (!(leg.tv > 0.0)) continue;  // no time, no motion
+        if (leg.finish() < from) continue;  // both steps done: it adds nothing (its sums, rounding)
         AxisVector up, down;  // the rising edge steps by dv, the falling one by -dv
         for (int i = 0; i < axes; ++i) up[i] = leg.delta[i] / leg.tv, down[i] = -up[i];
         std::size_t before = n;

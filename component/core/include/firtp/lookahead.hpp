@@ -300,6 +300,9 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
+    // The earliest kernel start of segment k's steps and those after it, among legs_[0, legs) as
+    // build_legs(from) made them (k >= from).
+    double first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const;
     // Whether segment s makes the same legs as `before` did (build_legs: speeds, durations, steps)
     // and `before`'s were checked.
     static bool same_motion(const Segment& s, const Segment& before);
@@ -351,6 +354,7 @@ private:
     LimitSweep sweep_;
     std::vector<TimedLeg> legs_;        // scratch for checks
     std::vector<std::size_t> leg_of_;   // scratch: index in legs_ of each segment's last leg
+    std::vector<std::size_t> leg_begin_;  // scratch: ... of its first (legs_.size() if none)
     std::vector<double> when_;          // scratch: exit step centre of each segment (check clock)
     std::vector<double> enter_;         // scratch: entry step centre of each segment
     std::vector<Segment> saved_;        // the accepted plan, restored when a change fails its check
