@@ -212,7 +212,12 @@ private:
     Regime alone_regime(std::size_t i, const Regime& dense) const;
 
     // Passes.
-    std::size_t backward(std::size_t last); // returns the first segment whose bounds changed
+    // From `last` down while the bounds change; returns the first segment whose bounds or flags
+    // changed. Below `settled` the fields are as the last pass found them (only their flags
+    // may follow a change).
+    std::size_t backward(std::size_t last, std::size_t settled = 0);
+    bool exit_end(std::size_t i) const;  // whether segment i's exit_max depends on the end of the known path
+    bool entry_end(std::size_t i, bool exit_end) const;  // ... its entry_max, given the former
     void forward(std::size_t from);
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
