@@ -382,7 +382,7 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     // (they had cancelled a hold's braking against the resume's start: 2x an axis' acceleration).
     bool checked_before = first > from;
     for (std::size_t i = from; i < first && checked_before; ++i) checked_before = !seg(i).unchecked;
-    const double sweep_from = checked_before ? std::max(begin, first_kernel_start(from, first - 1, legs)) : begin;
+    const double sweep_from = checked_before ? std::max(begin, std::min(first_kernel_start(from, first - 1, legs), end)) : begin;
     LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), sweep_from, end, machine_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).

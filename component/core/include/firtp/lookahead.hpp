@@ -306,7 +306,7 @@ private:
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
     // The earliest kernel start of segment k's steps and those after it, among legs_[0, legs) as
-    // build_legs(from) made them (k >= from).
+    // build_legs(from) made them (k >= from); infinity if they have none.
     double first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const;
     // Whether segment s makes the same legs as `before` did (build_legs: speeds, durations, steps)
     // and `before`'s were checked.
