@@ -102,6 +102,43 @@ TEST(Search, GuidedHalvingsAreTheHalvingsAnswer) {
     EXPECT_LT(guided_tests * 4, plain_tests * 3);  // 12 halvings leave less to save: about a quarter
 }
 
+// Tests that pass nowhere in the range, or only in its first 2^-9 .. 2^-47: the bisection's answer
+// (lo, or where the flip is), and where none passes, a few tests instead of bisection's 48 (+1).
+TEST(Search, NowhereOrNearTheKeptEndIsTheBisectionsAnswer) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int n = 0; n < 4000; ++n) {
+        const double lo = n % 2 == 0 ? 0.0 : 100.0 * unit(rng), hi = lo + 1.0 + 300.0 * unit(rng);
+        const bool nowhere = n % 3 == 0;
+        const double flip = nowhere ? lo - 1.0 : lo + (hi - lo) * std::ldexp(0.5 + 0.5 * unit(rng), -9 - static_cast<int>(rng() % 39));
+        for (bool up : {true, false}) {
+            // Up: passes up to the flip (highest); else passes from its mirror on (lowest).
+            const double at = up ? flip : hi - (flip - lo);
+            int guided = 0, plain = 0;
+            auto test = [&](double v, int& count) {
+                ++count;
+                const double m = up ? at - v : v - at;
+                return search::Probe{m >= 0.0, m};
+            };
+            const double a = up ? search::highest([&](double v) { return test(v, guided); }, lo, hi)
+                                : search::lowest([&](double v) { return test(v, guided); }, lo, hi);
+            const double b = up ? search::highest([&](double v) { return test(v, plain).ok; }, lo, hi)
+                                : search::lowest([&](double v) { return test(v, plain).ok; }, lo, hi);
+            ASSERT_EQ(a, b) << "case " << n << (up ? " highest" : " lowest");
+            if (nowhere) {
+                EXPECT_EQ(a, up ? lo : hi);
+                EXPECT_GE(plain, 40) << "case " << n;  // (halvings to 1e-13 of hi)
+                EXPECT_LE(guided, 1 + search::nowhere_after + 1) << "case " << n;
+            } else {
+                // A flip within 2^-40 of the kept end: bisection reaches it only at its last halvings,
+                // where ITP and the replay cost up to 10 tests more; the test of the last halving
+                // point one more.
+                EXPECT_LE(guided, plain + 11) << "case " << n;
+            }
+        }
+    }
+}
+
 // Not monotone: passes on [0, 100] and again on [150, 151]; the margin points at 150.5. The answer
 // need not be the bisection's, but it passes.
 TEST(Search, NotMonotoneStillPasses) {

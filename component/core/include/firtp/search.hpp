@@ -8,7 +8,10 @@
 // points inside the bracket are tested. For a test that is monotone that is the bisection's
 // answer, bit for bit. The answer is tested once more where it was only inferred; if it fails (a
 // test that is not monotone there), the plain bisection decides. Where the margin jumps at the
-// flip, the guide cannot help: a few tests more than bisection (search_test.cpp holds it to 8).
+// flip, the guide cannot help: a few tests more than bisection (search_test.cpp holds it to 8; 11
+// where the flip lies in bisection's last halvings). After a run of failures the search asks
+// whether the last point bisection would test passes at all: where it does not, the answer is the
+// kept end after a dozen tests instead of 49.
 #pragma once
 
 #include <algorithm>
@@ -19,6 +22,7 @@
 namespace firtp::search {
 
 constexpr int bisection_steps = 48;
+constexpr int nowhere_after = 8;  // failed halvings before flip() asks whether any point passes
 constexpr double resolution = 1e-13;  // of the upper end
 
 struct Probe {
@@ -130,6 +134,16 @@ double flip(F&& test, double lo, double hi) {
         int i = 0;
         bool found = false;
         for (; more(i, l, h) && !found; ++i) {
+            // After a run of failures, the last point the halvings would reach: where it fails
+            // too, no halving point passes (the kept end is the answer, untested as bisection
+            // leaves it). Some searches pass nowhere (a block too short to start and stop in:
+            // 64 % of lcnc__tort.ngc's), and bisection tests 48 points to say so.
+            if (i == nowhere_after) {
+                double el = l, eh = h, last = 0.0;
+                bool any = false;
+                for (int k = i; more(k, el, eh); ++k) last = other<Up>(el, eh) = 0.5 * (el + eh), any = true;
+                if (any && !test(last).ok) return kept<Up>(l, h);
+            }
             const double mid = 0.5 * (l + h);
             const Probe p = test(mid);
             if (p.ok) kept<Up>(l, h) = mid, m_ok = p.margin, found = true;
