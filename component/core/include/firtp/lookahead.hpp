@@ -305,6 +305,7 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
+    std::size_t context(std::size_t first) const;  // the segments before `first` whose kernels may reach it
     // The earliest kernel start of segment k's steps and those after it, among legs_[0, legs) as
     // build_legs(from) made them (k >= from); infinity if they have none.
     double first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const;
