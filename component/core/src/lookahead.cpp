@@ -513,16 +513,27 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
 
 // ---- Passes ------------------------------------------------------------------------------------
 
+double Lookahead::corner_exit_cap(std::size_t i) const {
+    const Segment& s = seg(i);
+    return std::min({s.corner_cap, s.learned_cap, s.feed_max, seg(i + 1).feed_max});
+}
+
 bool Lookahead::exit_end(std::size_t i) const {
     const Segment& s = seg(i);
     if (exit_is_stop(i)) return i + 1 == count_ && !finished_ && !s.exact_stop;  // an exact stop is its own, not the end's
     const Segment& n = seg(i + 1);
-    if (s.kind == Kind::corner) return n.entry_max < std::min({s.corner_cap, s.learned_cap, s.feed_max, n.feed_max}) && n.entry_end_limited;
+    if (s.kind == Kind::corner) return n.entry_max < corner_exit_cap(i) && n.entry_end_limited;
     return n.entry_end_limited;
 }
 
-bool Lookahead::entry_end(std::size_t i, bool exit_end) const {
-    return exit_end && seg(i).entry_max < seg(i).feed_max * (1.0 - 1e-12);
+bool Lookahead::refresh_end_flags(std::size_t i) {
+    Segment& s = seg(i);
+    const bool exit = exit_end(i);
+    const bool entry = exit && s.entry_max < s.feed_max * (1.0 - 1e-12);
+    const bool changed = exit != s.exit_end_limited || entry != s.entry_end_limited;
+    s.exit_end_limited = exit;
+    s.entry_end_limited = entry;
+    return changed;
 }
 
 std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
@@ -534,29 +545,20 @@ std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
             exit_max = s.dense ? std::min(s.feed_max, room_cap(i, s.alpha)) : s.feed_max;
         } else {
             const Segment& n = seg(i + 1);
-            if (s.kind == Kind::corner) exit_max = std::min({n.entry_max, s.corner_cap, s.learned_cap, s.feed_max, n.feed_max});
+            if (s.kind == Kind::corner) exit_max = std::min(n.entry_max, corner_exit_cap(i));
             else exit_max = dense_exit_max(i, n.entry_max);
         }
         const double entry_max = max_entry(i, exit_max);
         const bool same = i < last && exit_max == s.exit_max && entry_max == s.entry_max;
         s.exit_max = exit_max;
         s.entry_max = entry_max;
-        const bool exit = exit_end(i), entry = entry_end(i, exit);
-        if (same && exit == s.exit_end_limited && entry == s.entry_end_limited) break;
-        s.exit_end_limited = exit;
-        s.entry_end_limited = entry;
+        if (!refresh_end_flags(i) && same) break;
         changed = i;
         if (same && i <= settled) {
             // Only the end-limited flags changed, and the bounds before were found from what they
             // are now: they stand, the flags go on down alone (searching every bound again took
             // 0.5 ms an add at a quadrant of examples/polygon360.ngc, a queue of 256 blocks).
-            for (std::size_t k = i; k-- > 0;) {
-                const bool exit_k = exit_end(k), entry_k = entry_end(k, exit_k);
-                if (exit_k == seg(k).exit_end_limited && entry_k == seg(k).entry_end_limited) break;
-                seg(k).exit_end_limited = exit_k;
-                seg(k).entry_end_limited = entry_k;
-                changed = k;
-            }
+            for (std::size_t k = i; k-- > 0 && refresh_end_flags(k);) changed = k;
             break;
         }
     }

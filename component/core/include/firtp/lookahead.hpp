@@ -216,8 +216,9 @@ private:
     // changed. Below `settled` the fields are as the last pass found them (only their flags
     // may follow a change).
     std::size_t backward(std::size_t last, std::size_t settled = 0);
+    double corner_exit_cap(std::size_t i) const;  // a corner's exit bound but for the next block's entry
     bool exit_end(std::size_t i) const;  // whether segment i's exit_max depends on the end of the known path
-    bool entry_end(std::size_t i, bool exit_end) const;  // ... its entry_max, given the former
+    bool refresh_end_flags(std::size_t i);  // its end-limited flags from its bounds now; true if they changed
     void forward(std::size_t from);
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
