@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 using namespace firtp;
@@ -51,9 +52,12 @@ TEST_P(Replay, ProducesTheRecordedAxisStates) {
     ASSERT_GT(recorded.size(), 100u);
 
     const std::string ini = GetParam().ini;
-    test::Chain chain(ini.empty() ? default_machine() : load_machine(IniFile::read(dir + "/" + ini)));
+    const MachineConfig machine = ini.empty() ? default_machine() : load_machine(IniFile::read(dir + "/" + ini));
+    test::Chain chain(machine);
     for (const auto& b : blocks) chain.publish(b);
-    chain.run(static_cast<int>(recorded.size()) + 10);
+    // A start waits until the junction after its block is settled (the block after next, the
+    // program's end, or start_wait without a block): a log of two blocks and no end starts later.
+    chain.run(static_cast<int>(recorded.size()) + 10 + static_cast<int>(std::ceil(PlannerParameters{}.start_wait / machine.period)));
 
     const std::size_t r0 = first_moving(recorded), p0 = first_moving(chain.states);
     ASSERT_LT(r0, recorded.size());

@@ -2,16 +2,16 @@
 // programs fed a few blocks a period, as firtp.so and firtp_tp take them, against the whole
 // program known at once (programs that fit the window: a full window commits when it fills).
 //
-// DISABLED: a known defect, found 2026-11-27 and not fixed. It fails on 8 of 14 seeds
-// (FIRTP_RANDOM_SEED 1, 2, 3, 5, 7, 12, 13, 14) with 1 or 2 blocks a period (FIRTP_PER_PERIOD), e.g. seed 1
-// program 48: 34 blocks, all known by tick 17, the motions part at tick 107 and the fed one ends
-// 27 periods later. Found: the first block's start step freezes once its exit bound is its own
-// (final_for_start), with 2 blocks known; but the second block's classification (dense or not)
-// depends on the junction after it, and with it the first junction's regime and so the first
-// block's speed (seed 2 program 20: 32.61 mm/s fed, 33.90 known at once). Requiring more blocks
-// before a start (or a real stop among them) removes most: of seeds 1-14, 6 pass now, 11 with 2
-// more blocks, 13 with 4 (not seed 13 program 148), 10 waiting until the runs of short blocks at
-// the first two blocks end known; a rule that follows every dependence of the start is needed.
+// DISABLED: a known defect, found 2026-11-27, narrowed 2026-11-28. A start used to freeze with two
+// blocks known, while the junction after its block is decided again when the block after next
+// comes (classify, junction_caps); it now waits until that junction is settled
+// (Lookahead::settled; AStartWaitsUntilTheJunctionAfterItsBlockIsSettled below). Seeds 1-14 that
+// pass, 2 blocks a period: 6 before, 12 now (not seed 5 program 110, seed 7 program 147); 1 block
+// a period: 10 now (also not seed 3 program 78, seed 12 program 124). Causes seen in what is left:
+// the block under way is planned again after its start froze, and with its entry fixed its plateau
+// may rise above the start's speed, which a plan from rest never does (seed 7 program 147: 55.49
+// against 52.04 mm/s); and a check refused a plan only when fed, ending in a forced stop where the
+// whole program passes the corner at 0.07 mm/s (seed 5 program 110).
 // Run it with
 //   FIRTP_RANDOM_SEED=1 FIRTP_PER_PERIOD=2 core_tests --gtest_also_run_disabled_tests --gtest_filter='Arrival.*'
 #include "support/random_machine.hpp"
@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -46,16 +47,17 @@ std::vector<AxisState> fed_per_period(const PlannerParameters& p, const std::vec
     return out;
 }
 
-TEST(Arrival, DISABLED_BlocksFedAFewAPeriodGiveTheSamplesOfTheWholeProgram) {
-    const char* seed = std::getenv("FIRTP_RANDOM_SEED");
-    const char* per = std::getenv("FIRTP_PER_PERIOD");
-    const int per_period = per ? std::atoi(per) : 2;
-    std::mt19937_64 rng(seed ? std::strtoull(seed, nullptr, 10) : 1);
+// Fed and known at once, programs `wanted` of the random programs from `seed` (all that fit the
+// window if empty) must give the same samples; returns how many were compared.
+int compare_fed_and_whole(std::uint64_t seed, int per_period, const std::vector<int>& wanted) {
+    std::mt19937_64 rng(seed);
     int compared = 0;
-    for (int program = 0; program < 200; ++program) {
+    const int programs = wanted.empty() ? 200 : wanted.back() + 1;
+    for (int program = 0; program < programs; ++program) {
         const PlannerParameters p = test::random_machine(rng);
         const std::vector<Block> blocks = test::random_blocks(rng, p);
         if (blocks.size() >= p.queue_capacity) continue;
+        if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), program) == wanted.end()) continue;
         const Trajectory whole = plan_trajectory(p, AxisVector::Zero(), blocks);
         const std::vector<AxisState> fed = fed_per_period(p, blocks, per_period);
         // A first block alone waits for the next before it starts: the same motion, later.
@@ -65,16 +67,36 @@ TEST(Arrival, DISABLED_BlocksFedAFewAPeriodGiveTheSamplesOfTheWholeProgram) {
             return k;
         };
         const std::size_t a = first_move(whole.samples), b = first_move(fed);
-        ASSERT_GE(b, a);
-        ASSERT_EQ(fed.size() - b, whole.samples.size() - a) << "program " << program << " started " << b - a << " later";
+        EXPECT_GE(b, a) << "seed " << seed << " program " << program;
+        EXPECT_EQ(fed.size() - b, whole.samples.size() - a) << "seed " << seed << " program " << program << " started " << b - a << " later";
+        if (b < a || fed.size() - b != whole.samples.size() - a) return compared;
         double scale = 1.0;
         for (const Block& block : blocks) scale = std::max(scale, block.target.cwiseAbs().maxCoeff());
-        for (std::size_t k = a; k < whole.samples.size(); ++k)  // (later: times round differently)
-            ASSERT_LE((fed[k + b - a].position - whole.samples[k].position).cwiseAbs().maxCoeff(), 1e-9 * scale)
-                << "program " << program << " tick " << k << " of " << whole.samples.size();
+        for (std::size_t k = a; k < whole.samples.size(); ++k) {  // (later: times round differently)
+            const double off = (fed[k + b - a].position - whole.samples[k].position).cwiseAbs().maxCoeff();
+            if (off > 1e-9 * scale) {
+                ADD_FAILURE() << "seed " << seed << " program " << program << " tick " << k << " of " << whole.samples.size() << ": " << off << " mm apart";
+                return compared;
+            }
+        }
         ++compared;
     }
-    EXPECT_GT(compared, 100);
+    return compared;
+}
+
+TEST(Arrival, DISABLED_BlocksFedAFewAPeriodGiveTheSamplesOfTheWholeProgram) {
+    const char* seed = std::getenv("FIRTP_RANDOM_SEED");
+    const char* per = std::getenv("FIRTP_PER_PERIOD");
+    EXPECT_GT(compare_fed_and_whole(seed ? std::strtoull(seed, nullptr, 10) : 1, per ? std::atoi(per) : 2, {}), 100);
+}
+
+// A start froze with two blocks known, but the junction after its block is decided again when the
+// block after next comes (seed 2 program 20: 32.61 mm/s fed, 33.90 known at once). These failed
+// before the start waited for its junction to settle.
+TEST(Arrival, AStartWaitsUntilTheJunctionAfterItsBlockIsSettled) {
+    EXPECT_EQ(compare_fed_and_whole(1, 2, {48}), 1);
+    EXPECT_EQ(compare_fed_and_whole(2, 2, {20}), 1);
+    EXPECT_EQ(compare_fed_and_whole(3, 2, {46}), 1);
 }
 
 }  // namespace

@@ -285,7 +285,7 @@ void Lookahead::classify(std::size_t i) {
 void Lookahead::junction_caps(std::size_t i) {
     Segment& s = seg(i);
     const Segment& n = seg(i + 1);
-    if (s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal) {
+    if (stops_whatever_follows(s)) {
         s.kind = Kind::stop;
         s.corner_cap = 0.0;
         s.cap_bound = CornerBound::stop;
@@ -327,7 +327,7 @@ void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     set_turn(s, seg(i + 1).u);
     s.learned_cap = infinity;
-    s.kind = s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal || seg(i + 1).dwell > 0.0
+    s.kind = stops_whatever_follows(s) || seg(i + 1).dwell > 0.0
                  ? Kind::stop
                  : Kind::corner;
     s.sparse_cap = 0.0;
@@ -518,9 +518,17 @@ double Lookahead::corner_exit_cap(std::size_t i) const {
     return std::min({s.corner_cap, s.learned_cap, s.feed_max, seg(i + 1).feed_max});
 }
 
+// Junction i is decided again when block i + 2 comes (link(i + 1) classifies block i + 1 and
+// recomputes the junction), unless it is a stop whatever comes after.
+bool Lookahead::settled(std::size_t i) const {
+    return finished_ || i + 2 < count_ || (i + 1 < count_ && stops_whatever_follows(seg(i)));
+}
+
 bool Lookahead::exit_end(std::size_t i) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return i + 1 == count_ && !finished_ && !s.exact_stop;  // an exact stop is its own, not the end's
+    if (i + 1 == count_) return !finished_ && !s.exact_stop;  // an exact stop is its own, not the end's
+    if (!settled(i)) return true;                              // its junction's regime may change
+    if (s.kind == Kind::stop) return false;
     const Segment& n = seg(i + 1);
     if (s.kind == Kind::corner) return n.entry_max < corner_exit_cap(i) && n.entry_end_limited;
     return n.entry_end_limited;
@@ -706,7 +714,12 @@ Result Lookahead::add(const Block& block) {
     finished_ = false;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
-    replan(backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0));  // (link() changed junction count_ - 3 on)
+    const std::size_t changed = backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0);  // (link() changed junction count_ - 3 on)
+    // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
+    // (the pass above may have stopped before it; the bounds are the same).
+    if (count_ >= 3)
+        for (std::size_t k = count_ - 2; k-- > 0 && refresh_end_flags(k);) {}
+    replan(changed);
     return Result::ok;
 }
 

@@ -21,10 +21,11 @@
 // can always be brought to rest.
 //
 // A block's speeds are final once blocks after it can no longer change them (the backward bound
-// at its exit is its own, not the end's): its steps start only then, or when the window is full,
-// or when the motion would otherwise have to start late. So the motion should not depend on when
-// blocks arrive, only on which; it still does where a start freezes before the next block's
-// classification is settled (tests/core/arrival_test.cpp, disabled: a known defect).
+// at its exit is its own, not the end's, and its junction settled: the block after next is known):
+// its steps start only then, or when the window is full, or when the motion would otherwise have
+// to start late. So the motion should not depend on when blocks arrive, only on which; it still
+// does where the block under way is planned again after its start, or a check fails only when fed
+// (tests/core/arrival_test.cpp, disabled: a known defect).
 #pragma once
 
 #include <firtp/junction.hpp>
@@ -179,6 +180,11 @@ private:
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
     bool exit_is_stop(std::size_t i) const { return i + 1 == count_ || seg(i).kind == Kind::stop; }
+    // Asked for, forced by a check or a hold, or a reversal: the junction after it is a stop
+    // whatever the blocks around it are (junction_caps).
+    static bool stops_whatever_follows(const Segment& s) {
+        return s.exact_stop || s.forced_stop || s.hold_split || s.hold_end || s.turn.reversal;
+    }
     // entry_shape(i, a) is entry_shape(i, 1) with its box times a: a start, a corner at one speed
     // (not the frozen step, not a dense junction, whose turn changes with the speed).
     bool entry_scales(std::size_t i) const { return !(i == 0 && frozen_.moving) && (entry_is_stop(i) || seg(i - 1).kind != Kind::dense); }
@@ -218,6 +224,7 @@ private:
     std::size_t backward(std::size_t last, std::size_t settled = 0);
     double corner_exit_cap(std::size_t i) const;  // a corner's exit bound but for the next block's entry
     bool exit_end(std::size_t i) const;  // whether segment i's exit_max depends on the end of the known path
+    bool settled(std::size_t i) const;   // junction i stays as it is whatever blocks come next
     bool refresh_end_flags(std::size_t i);  // its end-limited flags from its bounds now; true if they changed
     void forward(std::size_t from);
     void plan_segment(std::size_t i, double entry);
