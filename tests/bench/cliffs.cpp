@@ -4,9 +4,10 @@
 // of the samples is compared. Issue 13 asks for none slower; this measures how far from that the
 // planner is (docs/BENCHMARKS.md):
 //
-//     firtp_cliffs [--programs N] [--seed S] [--list]
+//     firtp_cliffs [--programs N] [--seed S] [--list] [--times]
 //
 // --list prints each slower case: program index, what was raised, blocks, both cycle times.
+// --times prints every plan's cycle time (program, what was raised): two planners side by side.
 #include "support/random_machine.hpp"
 
 #include <firtp/trajectory.hpp>
@@ -57,15 +58,16 @@ void dump_case(const PlannerParameters& p, const std::vector<Block>& blocks, con
 int main(int argc, char** argv) {
     int programs = 150;
     std::uint64_t seed = 31;
-    bool list = false;
+    bool list = false, times = false;
     int dump = -1;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--list") == 0) list = true;
+        else if (std::strcmp(argv[i], "--times") == 0) times = true;
         else if (i + 1 < argc && std::strcmp(argv[i], "--programs") == 0) programs = std::atoi(argv[++i]);
         else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) seed = std::strtoull(argv[++i], nullptr, 10);
         else if (i + 1 < argc && std::strcmp(argv[i], "--dump") == 0) dump = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list]\n");
+            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list] [--times] [--dump K]\n");
             return 2;
         }
     }
@@ -82,6 +84,7 @@ int main(int argc, char** argv) {
         const test::RandomCase c = test::random_case(rng);
         const double base = cycle(c.parameters, c.blocks);
         if (base > 0.0) total += base, log_total += std::log(base), ++plans;
+        if (times) std::printf("program %d base %.6f\n", k, base);
         for (int variant = 0; variant < 4; ++variant) {
             PlannerParameters p = c.parameters;
             std::vector<Block> blocks = c.blocks;
@@ -95,6 +98,7 @@ int main(int argc, char** argv) {
             }
             const double raised = cycle(p, blocks);
             if (raised > 0.0) total += raised, log_total += std::log(raised), ++plans;
+            if (times) std::printf("program %d %s %.6f\n", k, names[variant], raised);
             if (k == dump) {
                 std::printf("program %d, %s raised\n", k, names[variant]);
                 dump_case(c.parameters, c.blocks, "before");

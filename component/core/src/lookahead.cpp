@@ -16,6 +16,7 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junction this slow is its stop
+constexpr double ramp_on_margin = 1e-9;  // of the target: a start from rest this close to it does not ramp on
 
 AxisVector unit(const AxisVector& v) {
     const double n = v.norm();
@@ -519,9 +520,11 @@ double Lookahead::corner_exit_cap(std::size_t i) const {
 }
 
 // Junction i is decided again when block i + 2 comes (link(i + 1) classifies block i + 1 and
-// recomputes the junction), unless it is a stop whatever comes after.
+// recomputes the junction), unless it is a stop whatever comes after (an exact stop even before
+// the next block comes).
 bool Lookahead::settled(std::size_t i) const {
-    return finished_ || i + 2 < count_ || (i + 1 < count_ && stops_whatever_follows(seg(i)));
+    const Segment& s = seg(i);
+    return finished_ || i + 2 < count_ || s.exact_stop || (i + 1 < count_ && stops_whatever_follows(s));
 }
 
 bool Lookahead::exit_end(std::size_t i) const {
@@ -612,10 +615,15 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         auto fits = [&](std::size_t, double a, double p, double b) { return fitting(a, p, b); };
         auto probe = [&](double a, double p, double b) { return fitting.probe(a, p, b); };
         double a = entry, p = 0.0, b = 0.0;
+        // From rest the start's speed is the highest one-speed plan's. Where that is below the
+        // target, the block ramps on up as it would once the start has frozen and it is planned
+        // again under way (a start then plans the same whenever the next blocks come).
+        const bool from_rest = a < 0.0;
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
                 p = highest([&](double v) { return probe(v, v, v); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
+                if (a > 0.0 && a < pt * (1.0 - ramp_on_margin)) p = highest([&](double v) { return probe(a, v, v); }, a, pt);
             } else if (pt >= a) {
                 p = highest([&](double v) { return probe(a, v, v); }, a, pt);
             } else if (s.brake) {
@@ -630,7 +638,8 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
                 p = highest([&](double v) { return probe(v, v, std::min(v, bt)); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
                 b = std::min(p, bt);
-            } else {
+            }
+            if (!from_rest || (a > 0.0 && a < pt * (1.0 - ramp_on_margin))) {
                 if (fits(i, a, std::max(a, bt), bt)) b = bt;
                 else if (bt > a) b = highest([&](double v) { return probe(a, v, v); }, a, bt);
                 else b = lowest([&](double v) { return probe(a, a, v); }, bt, std::min(a, s.exit_max));

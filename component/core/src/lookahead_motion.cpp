@@ -87,7 +87,14 @@ Lookahead::NextStep Lookahead::next_step() const {
 bool Lookahead::final_for_start() const {
     if (finished_ || count_ >= capacity_) return true;
     if (seg(0).exit_end_limited) return false;
-    return count_ < 2 || seg(0).kind != Kind::dense || !seg(1).entry_end_limited;
+    if (count_ >= 2 && seg(0).kind == Kind::dense && seg(1).entry_end_limited) return false;
+    // A run of dense blocks keeps one speed a block: a slow junction further on can slow it more
+    // than the stop at the end of the known path does. The start waits until the run's end is known.
+    for (std::size_t k = 0; k < count_; ++k) {
+        const Segment& s = seg(k);
+        if (!s.dense || s.kind == Kind::stop) return settled(k);
+    }
+    return false;
 }
 
 void Lookahead::refresh_current_leg() {

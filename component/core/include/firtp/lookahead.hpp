@@ -21,11 +21,12 @@
 // can always be brought to rest.
 //
 // A block's speeds are final once blocks after it can no longer change them (the backward bound
-// at its exit is its own, not the end's, and its junction settled: the block after next is known):
-// its steps start only then, or when the window is full, or when the motion would otherwise have
-// to start late. So the motion should not depend on when blocks arrive, only on which; it still
-// does where the block under way is planned again after its start, or a check fails only when fed
-// (tests/core/arrival_test.cpp, disabled: a known defect).
+// at its exit is its own, not the end's, and its junction settled: the block after next is known;
+// a run of dense blocks, whose one speed a block a slow junction further on can lower more than a
+// stop at the end does, has a known end): its steps start only then, or when the window is full,
+// or when the motion would otherwise have to start late. So the motion does not depend on when
+// blocks arrive, only on which, but where a later check refuses what the start has already
+// committed to (tests/core/arrival_test.cpp).
 #pragma once
 
 #include <firtp/junction.hpp>
