@@ -327,7 +327,8 @@ void Lookahead::set_turn(Segment& s, const AxisVector& next_u) const {
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     set_turn(s, seg(i + 1).u);
-    s.learned_cap = infinity;
+    s.learned_cap = infinity;  // (what the checks learned at its old end)
+    s.one_speed_start = false;
     s.kind = stops_whatever_follows(s) || seg(i + 1).dwell > 0.0
                  ? Kind::stop
                  : Kind::corner;
@@ -619,11 +620,16 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         // target, the block ramps on up as it would once the start has frozen and it is planned
         // again under way (a start then plans the same whenever the next blocks come).
         const bool from_rest = a < 0.0;
+        const bool starting = from_rest || (i == 0 && frozen_.moving && frozen_.start);
+        // (unless that failed the check: then one speed, from rest and once started alike)
+        const bool ramp_on = !s.one_speed_start;
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
                 p = highest([&](double v) { return probe(v, v, v); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
-                if (a > 0.0 && a < pt * (1.0 - ramp_on_margin)) p = highest([&](double v) { return probe(a, v, v); }, a, pt);
+                if (ramp_on && a > 0.0 && a < pt * (1.0 - ramp_on_margin)) p = highest([&](double v) { return probe(a, v, v); }, a, pt);
+            } else if (starting && !ramp_on && pt >= a && fits(i, a, a, a)) {
+                p = a;
             } else if (pt >= a) {
                 p = highest([&](double v) { return probe(a, v, v); }, a, pt);
             } else if (s.brake) {
@@ -639,7 +645,10 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
                 a = p;
                 b = std::min(p, bt);
             }
-            if (!from_rest || (a > 0.0 && a < pt * (1.0 - ramp_on_margin))) {
+            if (starting && !ramp_on && a > 0.0 && !from_rest && fits(i, a, a, std::min(a, bt))) {
+                p = a;
+                b = std::min(a, bt);
+            } else if (!from_rest || (ramp_on && a > 0.0 && a < pt * (1.0 - ramp_on_margin))) {
                 if (fits(i, a, std::max(a, bt), bt)) b = bt;
                 else if (bt > a) b = highest([&](double v) { return probe(a, v, v); }, a, bt);
                 else b = lowest([&](double v) { return probe(a, a, v); }, bt, std::min(a, s.exit_max));
@@ -655,6 +664,7 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
             p = s.p, b = s.b;
         const ProfileLegs legs = profile_legs(rules_, fitting.input(a, b), a, p, b);
         s.unfit = !legs.fits;  // the check turns it back (its entry corner is lowered)
+        s.ramped_on = starting && p > a;
         s.a = a, s.p = p, s.b = b;
         s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;
     }

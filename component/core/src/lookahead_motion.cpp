@@ -196,6 +196,7 @@ void Lookahead::freeze(const NextStep& n) {
     frozen_.any = true;
     frozen_.speed = n.speed_after;
     frozen_.junction = n.kind == StepKind::junction;
+    frozen_.start = n.kind == StepKind::start;
     frozen_.moving = n.speed_after > 0.0 && count_ > 0;
     if (!frozen_.moving) return;
     const Segment& s = seg(0);
@@ -532,6 +533,13 @@ void Lookahead::replan(std::size_t first) {
             forward(from);
             for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true;
             break;
+        }
+        // A block that ramped on from its start keeps the start's speed before its corner is
+        // lowered (a start from rest used to keep one speed: random programs ran up to 1.2 % slower).
+        if (seg(bad).ramped_on && !seg(bad).one_speed_start) {
+            seg(bad).one_speed_start = true;
+            from = std::min(from, bad);
+            continue;
         }
         // Lower the corner: the error grows about with the square of the speed.
         Segment& j = seg(bad);

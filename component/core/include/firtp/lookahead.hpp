@@ -98,6 +98,8 @@ private:
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
+        bool ramped_on = false;    // planned from its start (from rest or just started) to a plateau above it
+        bool one_speed_start = false;  // that ramp on failed the check at its exit: it keeps its start's speed
         Regime regime;           // of its own steps (start, stop, ramps)
         bool exact_stop = false;
         bool forced_stop = false;  // no checked plan passed it: the tool stops there
@@ -162,6 +164,7 @@ private:
         bool moving = false;     // a leg is under way after the frozen step
         bool any = false;        // a step has frozen since the last reset
         bool junction = false;   // the frozen step is a corner between two segments (not a ramp)
+        bool start = false;      // the frozen step is the front segment's start from rest
         double speed = 0.0;      // that leg's command speed
         Step step;               // the frozen step
         std::int64_t tick = 0;   // its centre: tick * period + offset
