@@ -733,11 +733,11 @@ Result Lookahead::add(const Block& block) {
     finished_ = false;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
-    const std::size_t changed = backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0);  // (link() changed junction count_ - 3 on)
+    std::size_t changed = backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0);  // (link() changed junction count_ - 3 on)
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
     // (the pass above may have stopped before it; the bounds are the same).
     if (count_ >= 3)
-        for (std::size_t k = count_ - 2; k-- > 0 && refresh_end_flags(k);) {}
+        for (std::size_t k = count_ - 2; k-- > 0 && refresh_end_flags(k);) changed = std::min(changed, k);
     replan(changed);
     return Result::ok;
 }
