@@ -548,6 +548,12 @@ bool Lookahead::refresh_end_flags(std::size_t i) {
     return changed;
 }
 
+std::size_t Lookahead::refresh_end_flags_below(std::size_t i) {
+    std::size_t lowest = i;
+    for (std::size_t k = i; k-- > 0 && refresh_end_flags(k);) lowest = k;
+    return lowest;
+}
+
 std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
     std::size_t changed = count_;
     for (std::size_t i = last + 1; i-- > 0;) {
@@ -570,7 +576,7 @@ std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
             // Only the end-limited flags changed, and the bounds before were found from what they
             // are now: they stand, the flags go on down alone (searching every bound again took
             // 0.5 ms an add at a quadrant of examples/polygon360.ngc, a queue of 256 blocks).
-            for (std::size_t k = i; k-- > 0 && refresh_end_flags(k);) changed = k;
+            changed = refresh_end_flags_below(i);
             break;
         }
     }
@@ -619,16 +625,17 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         // From rest the start's speed is the highest one-speed plan's. Where that is below the
         // target, the block ramps on up as it would once the start has frozen and it is planned
         // again under way (a start then plans the same whenever the next blocks come).
+        // Where that ramp on failed the check, one speed, from rest and once started alike.
         const bool from_rest = a < 0.0;
         const bool starting = from_rest || (i == 0 && frozen_.moving && frozen_.start);
-        // (unless that failed the check: then one speed, from rest and once started alike)
-        const bool ramp_on = !s.one_speed_start;
+        const bool one_speed = starting && s.one_speed_start;
+        auto ramps_on = [&](double start) { return !s.one_speed_start && start > 0.0 && start < pt * (1.0 - ramp_on_margin); };
         if (exit_is_stop(i)) {  // the stop step does the last ramp: b = p
             if (a < 0.0) {
                 p = highest([&](double v) { return probe(v, v, v); }, 0.0, std::min(pt, s.entry_max));
                 a = p;
-                if (ramp_on && a > 0.0 && a < pt * (1.0 - ramp_on_margin)) p = highest([&](double v) { return probe(a, v, v); }, a, pt);
-            } else if (starting && !ramp_on && pt >= a && fits(i, a, a, a)) {
+                if (ramps_on(a)) p = highest([&](double v) { return probe(a, v, v); }, a, pt);
+            } else if (one_speed && pt >= a && fits(i, a, a, a)) {
                 p = a;
             } else if (pt >= a) {
                 p = highest([&](double v) { return probe(a, v, v); }, a, pt);
@@ -645,10 +652,10 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
                 a = p;
                 b = std::min(p, bt);
             }
-            if (starting && !ramp_on && a > 0.0 && !from_rest && fits(i, a, a, std::min(a, bt))) {
+            if (one_speed && !from_rest && fits(i, a, a, std::min(a, bt))) {  // (from rest it is already)
                 p = a;
                 b = std::min(a, bt);
-            } else if (!from_rest || (ramp_on && a > 0.0 && a < pt * (1.0 - ramp_on_margin))) {
+            } else if (!from_rest || ramps_on(a)) {
                 if (fits(i, a, std::max(a, bt), bt)) b = bt;
                 else if (bt > a) b = highest([&](double v) { return probe(a, v, v); }, a, bt);
                 else b = lowest([&](double v) { return probe(a, a, v); }, bt, std::min(a, s.exit_max));
@@ -736,8 +743,7 @@ Result Lookahead::add(const Block& block) {
     std::size_t changed = backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0);  // (link() changed junction count_ - 3 on)
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
     // (the pass above may have stopped before it; the bounds are the same).
-    if (count_ >= 3)
-        for (std::size_t k = count_ - 2; k-- > 0 && refresh_end_flags(k);) changed = std::min(changed, k);
+    if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
     replan(changed);
     return Result::ok;
 }

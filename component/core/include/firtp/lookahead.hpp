@@ -231,6 +231,7 @@ private:
     bool exit_end(std::size_t i) const;  // whether segment i's exit_max depends on the end of the known path
     bool settled(std::size_t i) const;   // junction i stays as it is whatever blocks come next
     bool refresh_end_flags(std::size_t i);  // its end-limited flags from its bounds now; true if they changed
+    std::size_t refresh_end_flags_below(std::size_t i);  // segments i - 1, i - 2, ... while they change; the lowest changed (i: none)
     void forward(std::size_t from);
     void plan_segment(std::size_t i, double entry);
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
