@@ -355,6 +355,76 @@ TEST(MotionCheckReference, ChordSagBoundsTheSampledApproach) {
     EXPECT_GT(by_jerks, 100);
 }
 
+// closest_approach's chords as they were sampled (main at 766bd6c): every chord within
+// sampled_chords periods of the approach, on every phase.
+double ref_sampled(std::span<const TimedLeg> legs, std::size_t corner, double time, double period, int phases, double* latest) {
+    double sampled = 0.0;
+    for (int f = 0; f < phases; ++f) {
+        const double phase = static_cast<double>(f) / phases;
+        const double k0 = std::floor(time / period - phase);
+        double nearest = HUGE_VAL;
+        AxisVector previous = relative_position(legs, corner, (k0 - sampled_chords + phase) * period);
+        for (double k = k0 - sampled_chords + 1; k <= k0 + sampled_chords + 1; ++k) {
+            *latest = std::max(*latest, (k + phase) * period);
+            const AxisVector next = relative_position(legs, corner, (k + phase) * period);
+            const AxisVector d = next - previous;
+            const double dd = d.squaredNorm();
+            const double u = dd > 0.0 ? std::clamp(-previous.dot(d) / dd, 0.0, 1.0) : 0.0;
+            nearest = std::min(nearest, (previous + u * d).norm());
+            previous = next;
+        }
+        sampled = std::max(sampled, nearest);
+    }
+    return sampled;
+}
+
+// The phases and chords closest_approach leaves out (their bound from the acceleration at the
+// approach and the jerk) would not have changed its answer: the same as sampling every chord of
+// every phase, bit for bit, on legs held to the limits the bounds come from.
+TEST(MotionCheckReference, LeftOutPhasesDoNotChangeTheSampledApproach) {
+    std::mt19937_64 rng(29);
+    constexpr double period = 0.001;
+    LimitSweep sweep(256);
+    int compared = 0, bounded = 0;
+    for (int axes : {1, 2, 3, 5}) {
+        for (int run = 0; run < 1500; ++run) {
+            std::vector<TimedLeg> legs = random_legs(rng, axes, 3 + static_cast<int>(rng() % 20));
+            index_legs(legs);
+            const bool two_stages = std::all_of(legs.begin(), legs.end(), [](const TimedLeg& l) {
+                return l.rising.width() > 0.0 && l.falling.width() > 0.0 && l.rising.b > 0.0 && l.falling.b > 0.0;
+            });
+            auto keeps = [&](double scale) { return sweep.check(legs, 0.0, legs.back().finish(), limits_of(axes, scale), period).ok; };
+            ApproachBounds bounds;  // none: every phase sampled (only the chords' early end applies)
+            if (two_stages && keeps(400.0)) {
+                double lo = 0.01, hi = 400.0;
+                for (int k = 0; k < 30; ++k) (keeps(std::sqrt(lo * hi)) ? hi : lo) = std::sqrt(lo * hi);
+                const MachineLimits limits = limits_of(axes, hi);
+                double acc2 = 0.0, jerk2 = 0.0;
+                for (int i = 0; i < axes; ++i) {
+                    acc2 += std::pow(limits.axis[i].max_acceleration * (1.0 + 1e-6), 2);
+                    jerk2 += std::pow(limits.axis[i].max_jerk * (1.0 + 1e-6), 2);
+                }
+                bounds = {std::sqrt(acc2), std::sqrt(jerk2), 0.0, HUGE_VAL};
+                ++bounded;
+            }
+            const std::size_t corner = rng() % (legs.size() - 1);
+            const TimedLeg& c = legs[corner];
+            const double guess = c.rise + c.fall + 0.5 * c.falling.width();
+            for (int phases : {1, 3, 8}) {
+                const Approach got = closest_approach(legs, corner, guess, period, phases, bounds);
+                double latest = got.time;
+                const double want = ref_sampled(legs, corner, got.time, period, phases, &latest);
+                ASSERT_EQ(got.sampled, want) << "axes " << axes << " run " << run << " phases " << phases;
+                ASSERT_EQ(got.distance, std::max(got.smooth, want));
+                ASSERT_GE(got.latest, latest);
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(bounded, 300);
+    EXPECT_GT(compared, 10000);
+}
+
 // chain_bounds holds the acceleration and jerk of legs smoothed by the paper's chain, on random
 // chains and legs, within the window it is asked about.
 TEST(MotionCheckReference, ChainBoundsHold) {

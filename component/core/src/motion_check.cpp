@@ -3,6 +3,7 @@
 #include <firtp/junction.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -355,17 +356,46 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         best.latest = std::max(best.latest, best.time + period);
         return best;
     }
+    // Per phase the nearest chord, and the worst phase's. A phase whose chords cannot come
+    // farther than the worst found so far is left out, and so is the rest of a phase's chords
+    // once one is no farther: the same answer from fewer positions. The chord across the approach
+    // time t* from t1 to t2 passes within |p(t*)| + (t* - t1)(t2 - t*) / 2 max |a| of the corner
+    // (linear interpolation's error), |a| within J T of the approach's. Phases go from the most
+    // centred on t* (the farthest chord, where the path bends) outwards.
+    struct Phase {
+        double phase, k0, spread;  // spread: (t* - t1)(t2 - t*) / 2
+    };
+    std::array<Phase, max_phases> order;
+    const int n = std::clamp(phases, 1, max_phases);
+    for (int f = 0; f < n; ++f) {
+        Phase& x = order[f];
+        x.phase = static_cast<double>(f) / n;
+        x.k0 = std::floor(best.time / period - x.phase);
+        const double t1 = (x.k0 + x.phase) * period, t2 = (x.k0 + 1 + x.phase) * period;
+        x.spread = 0.5 * std::max(best.time - t1, 0.0) * std::max(t2 - best.time, 0.0);
+        best.latest = std::max(best.latest, (x.k0 + sampled_chords + 1 + x.phase) * period);
+        for (int g = f; g > 0 && order[g - 1].spread < order[g].spread; --g) std::swap(order[g - 1], order[g]);
+    }
+    const double bend = std::min(bounds.acceleration, acceleration + bounds.jerk * period);
     best.sampled = 0.0;
-    for (int f = 0; f < std::max(phases, 1); ++f) {
-        const double phase = static_cast<double>(f) / std::max(phases, 1);
-        const double k0 = std::floor(best.time / period - phase);
-        double nearest = HUGE_VAL;
-        AxisVector previous = relative_position(legs, corner, (k0 - sampled_chords + phase) * period);
-        for (double k = k0 - sampled_chords + 1; k <= k0 + sampled_chords + 1; ++k) {
-            best.latest = std::max(best.latest, (k + phase) * period);
-            const AxisVector next = relative_position(legs, corner, (k + phase) * period);
-            nearest = std::min(nearest, chord_distance(previous, next));
-            previous = next;
+    for (int f = 0; f < n; ++f) {
+        const Phase& x = order[f];
+        // 1e-9: what rounding in the positions could add to a chord's distance, and more.
+        if (f > 0 && best.smooth + x.spread * bend <= best.sampled * (1.0 - 1e-9)) break;
+        const AxisVector p = relative_position(legs, corner, (x.k0 + x.phase) * period);
+        const AxisVector q = relative_position(legs, corner, (x.k0 + 1 + x.phase) * period);
+        double nearest = chord_distance(p, q);
+        AxisVector later = p;  // the chords before the approach, back from it
+        for (int k = 1; k <= sampled_chords && nearest > best.sampled; ++k) {
+            const AxisVector earlier = relative_position(legs, corner, (x.k0 - k + x.phase) * period);
+            nearest = std::min(nearest, chord_distance(earlier, later));
+            later = earlier;
+        }
+        AxisVector earlier = q;  // ... and after it
+        for (int k = 2; k <= sampled_chords + 1 && nearest > best.sampled; ++k) {
+            const AxisVector next = relative_position(legs, corner, (x.k0 + k + x.phase) * period);
+            nearest = std::min(nearest, chord_distance(earlier, next));
+            earlier = next;
         }
         best.sampled = std::max(best.sampled, nearest);
     }

@@ -103,6 +103,7 @@ struct Approach {
 };
 
 constexpr int sampled_chords = 3;
+constexpr int max_phases = 16;  // sample grids closest_approach takes (more are taken as 16)
 
 // What closest_approach may lean on to spare sampling the chords between the samples. A chord
 // strays from the path it spans by at most period^2 / 8 |a|max over its period.
