@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 using namespace firtp;
@@ -100,6 +101,42 @@ TEST(Search, GuidedHalvingsAreTheHalvingsAnswer) {
         if (!jumps && flip > lo && flip < hi) guided_tests += guided - 1, plain_tests += plain;
     }
     EXPECT_LT(guided_tests * 4, plain_tests * 3);  // 12 halvings leave less to save: about a quarter
+}
+
+// The same halvings where hi is known to fail (PaperPlanner::search's estimate): the answer is
+// the halvings', and a flip near the top (counted) costs a few tests instead of walking up to it.
+TEST(Search, HalvingsFromAFailedHiAreTheHalvingsAnswer) {
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long guided_tests = 0, plain_tests = 0, one_end_tests = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double lo = 0.05 * unit(rng), hi = lo + 0.01 + 0.3 * unit(rng), slope = 0.5 + unit(rng);
+        // Near the top in most cases, as an estimate just above the flip leaves it.
+        const double flip = n % 2 == 0 ? hi - (hi - lo) * 0.01 * unit(rng) : lo + (hi - lo) * unit(rng);
+        const bool jumps = n % 4 == 1;
+        int guided = 0, plain = 0;
+        auto test = [&](double tk, int& count) {
+            ++count;
+            const double m = (flip - tk) * (slope + tk) - (jumps && tk > flip ? 1.0 : 0.0);
+            return search::Probe{m >= 0.0, m};
+        };
+        const search::Probe at_lo = test(lo, guided), at_hi = test(hi, guided);
+        if (!at_lo.ok || at_hi.ok) continue;
+        const double a = search::halvings([&](double tk) { return test(tk, guided); }, lo, at_lo.margin, hi, at_hi.margin, 12);
+        double l = lo, h = hi;
+        for (int i = 0; i < 12; ++i) {
+            const double mid = 0.5 * (l + h);
+            (test(mid, plain).ok ? l : h) = mid;
+        }
+        ASSERT_EQ(a, l) << "case " << n;
+        ASSERT_LE(guided, plain + 2 + 8) << "case " << n;  // + the tests of lo and hi
+        int one_end = 0;  // the halvings from lo alone
+        ASSERT_EQ(search::halvings([&](double tk) { return test(tk, one_end); }, lo, at_lo.margin, hi, 12), a);
+        if (!jumps && n % 2 == 0) guided_tests += guided - 2, plain_tests += plain, one_end_tests += one_end;
+    }
+    std::printf("near the top: %ld tests, from lo alone %ld, plain halvings %ld\n", guided_tests, one_end_tests, plain_tests);
+    EXPECT_LT(guided_tests * 3, plain_tests * 2);
+    EXPECT_LT(guided_tests * 3, one_end_tests * 2);
 }
 
 // Tests that pass nowhere in the range, or only in its first 2^-9 .. 2^-47: the bisection's answer

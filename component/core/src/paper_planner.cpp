@@ -199,21 +199,31 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
     auto ok = [&](double Tk, double f) { return probe(Tk, f).ok; };
     constexpr int steps = 14;
     const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, Tk_high);
-    if ((estimate >= Tk_high || beta < shallow) && ok(Tk_high, feed)) return Choice{Tk_high, feed};
+    search::Probe at_high{true, 0.0};  // Tk_high's test at the feed, where it was made
+    if (estimate >= Tk_high || beta < shallow) {
+        if ((at_high = probe(Tk_high, feed)).ok) return Choice{Tk_high, feed};
+    }
     if (beta < shallow && ok(Tk_high, feed * min_feed_fraction)) {
         const auto full = highest_feasible_feed([&](double f) { return ok(Tk_high, f); }, feed, steps, slowest);
         return Choice{Tk_high, full.value_or(feed * min_feed_fraction)};
     }
     // Bracket below the estimate, then bisect.
     double lo = 0.0, hi = Tk_high;
-    search::Probe at_lo;
+    search::Probe at_lo, at_hi = at_high;  // at_hi.ok: hi not tested
     if (estimate > 0.0) {
-        if (estimate < Tk_high && (at_lo = probe(estimate, feed)).ok) lo = estimate;
-        else if (hi = std::min(hi, estimate), (at_lo = probe(estimate * (15.0 / 16.0), feed)).ok) lo = estimate * (15.0 / 16.0);
+        if (estimate < Tk_high && (at_lo = probe(estimate, feed)).ok) {
+            lo = estimate;
+        } else {
+            if (estimate < Tk_high) hi = estimate, at_hi = at_lo;
+            if ((at_lo = probe(estimate * (15.0 / 16.0), feed)).ok) lo = estimate * (15.0 / 16.0);
+        }
     }
     if (lo > 0.0 || (at_lo = probe(0.0, feed)).ok) {
-        // 12 halvings (to Td / 4096 at most), guided by the corners' slack (search.hpp).
-        lo = search::halvings([&](double Tk) { return probe(Tk, feed); }, lo, at_lo.margin, hi, 12);
+        // 12 halvings (to Td / 4096 at most), guided by the corners' slack (search.hpp); from
+        // both ends where hi failed (the estimate is close: the flip is found in a few tests).
+        auto test = [&](double Tk) { return probe(Tk, feed); };
+        lo = !at_hi.ok && lo < hi ? search::halvings(test, lo, at_lo.margin, hi, at_hi.margin, 12)
+                                  : search::halvings(test, lo, at_lo.margin, hi, 12);
         return Choice{lo, feed};
     }
     // Even a stop breaks a limit: the block itself is too fast for the filters (short T).

@@ -168,6 +168,17 @@ double lowest(F&& test, double lo, double hi) {
     return flip<false>(test, lo, hi);
 }
 
+namespace detail {
+template <class F>
+double plain_halvings(F& test, double lo, double hi, int steps) {
+    for (int i = 0; i < steps; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (test(mid).ok ? lo : hi) = mid;
+    }
+    return lo;
+}
+}  // namespace detail
+
 // `steps` halvings of [lo, hi] keeping the passing half, from lo that passed (margin m_lo; hi not
 // tested): where they end, lo if no point passes. Guided as highest(): the halvings up to the first
 // failing point, then the rest replayed on the flip.
@@ -185,12 +196,17 @@ double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
     }
     if (!failed) return l;
     if (const auto end = replay<true>(test, l, h, i, more, m_lo, m_h, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
-    l = lo, h = hi;  // the plain halvings
-    for (i = 0; more(i, l, h); ++i) {
-        const double mid = 0.5 * (l + h);
-        (test(mid).ok ? l : h) = mid;
-    }
-    return l;
+    return detail::plain_halvings(test, lo, hi, steps);
+}
+
+// The same halvings where hi failed its test (margin m_hi): the flip is narrowed from the first
+// halving on. Where the flip lies near one end (a good first guess brackets it), the halvings
+// that only pass or only fail on the way there cost no tests.
+template <class F>
+double halvings(F&& test, double lo, double m_lo, double hi, double m_hi, int steps) {
+    auto more = [steps](int i, double, double) { return i < steps; };
+    if (const auto end = replay<true>(test, lo, hi, 0, more, m_lo, m_hi, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
+    return detail::plain_halvings(test, lo, hi, steps);
 }
 
 }  // namespace firtp::search
