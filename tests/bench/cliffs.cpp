@@ -81,7 +81,8 @@ int main(int argc, char** argv) {
         return plan_trajectory(p, AxisVector::Zero(), blocks).cycle_time;
     };
     for (int k = 0; k < programs; ++k) {
-        const test::RandomCase c = test::random_case(rng);
+        const test::CliffsProgram drawn = test::cliffs_program(rng);
+        const test::RandomCase& c = drawn.c;
         const double base = cycle(c.parameters, c.blocks);
         if (base > 0.0) total += base, log_total += std::log(base), ++plans;
         if (times) std::printf("program %d base %.6f\n", k, base);
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
             PlannerParameters p = c.parameters;
             std::vector<Block> blocks = c.blocks;
             if (variant < 3) {
-                AxisLimits& l = p.limits.axis[rng() % static_cast<unsigned>(p.limits.axes)];
+                AxisLimits& l = p.limits.axis[drawn.raised_axis[static_cast<std::size_t>(variant)]];
                 double& limit = variant == 0 ? l.max_velocity : variant == 1 ? l.max_acceleration : l.max_jerk;
                 if (!(limit > 0.0)) continue;
                 limit *= 1.25;

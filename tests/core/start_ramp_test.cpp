@@ -14,17 +14,11 @@
 namespace firtp {
 namespace {
 
-// firtp_cliffs' program `program` of `seed`: each program draws its case, then an axis for each of
-// the three limits it raises.
+// firtp_cliffs' program `program` of `seed`.
 test::RandomCase cliffs_case(std::uint64_t seed, int program) {
     std::mt19937_64 rng(seed);
-    test::RandomCase c;
-    for (int k = 0; k <= program; ++k) {
-        c = test::random_case(rng);
-        if (k < program)
-            for (int raised = 0; raised < 3; ++raised) rng();
-    }
-    return c;
+    for (int k = 0; k < program; ++k) test::cliffs_program(rng);
+    return test::cliffs_program(rng).c;
 }
 
 TEST(StartRamp, ARampOnTheCheckRefusesKeepsTheStartsSpeed) {

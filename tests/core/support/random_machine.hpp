@@ -14,6 +14,7 @@
 #include <firtp/types.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -132,6 +133,20 @@ inline RandomCase random_case(std::mt19937_64& rng) {
         }
         if (well_separated(points, 3 * tolerance + fastest * c.parameters.period)) return c;
     }
+}
+
+// One program of firtp_cliffs (tests/bench/cliffs.cpp) as it draws it: the case, then the axis
+// whose velocity, acceleration and jerk limit it raises. Tests that hold one of its programs
+// (start_ramp_test.cpp) draw them the same way.
+struct CliffsProgram {
+    RandomCase c;
+    std::array<unsigned, 3> raised_axis{};  // velocity, acceleration, jerk
+};
+
+inline CliffsProgram cliffs_program(std::mt19937_64& rng) {
+    CliffsProgram p{random_case(rng), {}};
+    for (unsigned& axis : p.raised_axis) axis = static_cast<unsigned>(rng() % static_cast<unsigned>(p.c.parameters.limits.axes));
+    return p;
 }
 
 // Soak runs: FIRTP_RANDOM_SEED shifts every seed, FIRTP_RANDOM_SCALE multiplies every count.
