@@ -74,6 +74,25 @@ TEST(Search, GuidedLowestIsTheBisectionsAnswer) {
     EXPECT_LT(guided_tests * 3, plain_tests);
 }
 
+// The Tk searches' test: passes up to the flip; its margin smooth, or jumping there (jumps).
+auto tk_test(double flip, double slope, bool jumps) {
+    return [=](double tk, int& count) {
+        ++count;
+        const double m = (flip - tk) * (slope + tk) - (jumps && tk > flip ? 1.0 : 0.0);
+        return search::Probe{m >= 0.0, m};
+    };
+}
+
+// 12 plain halvings of [lo, hi] keeping the passing half.
+template <class T>
+double twelve_halvings(T& test, double lo, double hi, int& count) {
+    for (int i = 0; i < 12; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (test(mid, count).ok ? lo : hi) = mid;
+    }
+    return lo;
+}
+
 // The paper's Tk search: 12 halvings from a passing lo (hi not tested), as PaperPlanner::search.
 TEST(Search, GuidedHalvingsAreTheHalvingsAnswer) {
     std::mt19937_64 rng(5);
@@ -83,20 +102,11 @@ TEST(Search, GuidedHalvingsAreTheHalvingsAnswer) {
         const double hi = 0.05 + 0.3 * unit(rng), flip = hi * (1.2 * unit(rng) - 0.1), slope = 0.5 + unit(rng);
         const bool jumps = n % 4 == 1;
         int guided = 0, plain = 0;
-        auto test = [&](double tk, int& count) {
-            ++count;
-            const double m = (flip - tk) * (slope + tk) - (jumps && tk > flip ? 1.0 : 0.0);
-            return search::Probe{m >= 0.0, m};
-        };
+        auto test = tk_test(flip, slope, jumps);
         const double lo = 0.0, m_lo = test(lo, guided).margin;
         if (!(m_lo >= 0.0)) continue;  // lo must pass
         const double a = search::halvings([&](double tk) { return test(tk, guided); }, lo, m_lo, hi, 12);
-        double l = lo, h = hi;
-        for (int i = 0; i < 12; ++i) {
-            const double mid = 0.5 * (l + h);
-            (test(mid, plain).ok ? l : h) = mid;
-        }
-        ASSERT_EQ(a, l) << "case " << n;
+        ASSERT_EQ(a, twelve_halvings(test, lo, hi, plain)) << "case " << n;
         ASSERT_LE(guided, plain + 1 + 8) << "case " << n;  // + the test of lo
         if (!jumps && flip > lo && flip < hi) guided_tests += guided - 1, plain_tests += plain;
     }
@@ -115,20 +125,11 @@ TEST(Search, HalvingsFromAFailedHiAreTheHalvingsAnswer) {
         const double flip = n % 2 == 0 ? hi - (hi - lo) * 0.01 * unit(rng) : lo + (hi - lo) * unit(rng);
         const bool jumps = n % 4 == 1;
         int guided = 0, plain = 0;
-        auto test = [&](double tk, int& count) {
-            ++count;
-            const double m = (flip - tk) * (slope + tk) - (jumps && tk > flip ? 1.0 : 0.0);
-            return search::Probe{m >= 0.0, m};
-        };
+        auto test = tk_test(flip, slope, jumps);
         const search::Probe at_lo = test(lo, guided), at_hi = test(hi, guided);
         if (!at_lo.ok || at_hi.ok) continue;
         const double a = search::halvings([&](double tk) { return test(tk, guided); }, lo, at_lo.margin, hi, at_hi.margin, 12);
-        double l = lo, h = hi;
-        for (int i = 0; i < 12; ++i) {
-            const double mid = 0.5 * (l + h);
-            (test(mid, plain).ok ? l : h) = mid;
-        }
-        ASSERT_EQ(a, l) << "case " << n;
+        ASSERT_EQ(a, twelve_halvings(test, lo, hi, plain)) << "case " << n;
         ASSERT_LE(guided, plain + 2 + 8) << "case " << n;  // + the tests of lo and hi
         int one_end = 0;  // the halvings from lo alone
         ASSERT_EQ(search::halvings([&](double tk) { return test(tk, one_end); }, lo, at_lo.margin, hi, 12), a);
