@@ -110,56 +110,73 @@ std::optional<double> replay(F& test, double l, double h, int i, More&& more, do
     return replay<Up>(test, l, h, i, more, true, kept<Up>(l, h), m_ok, other<Up>(l, h), m_bad, eps);
 }
 
+namespace detail {
+
+inline bool more(int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; }
+
+template <bool Up, class F>
+double bisect(F& ok, double l, double h) {
+    for (int i = 0; more(i, l, h); ++i) {
+        const double mid = 0.5 * (l + h);
+        (ok(mid) ? kept<Up>(l, h) : other<Up>(l, h)) = mid;
+    }
+    return kept<Up>(l, h);
+}
+
+// flip()'s guided search once the end it tests first has failed; x_bad (margin m_bad) is the
+// failing point nearest the other end known so far (that end itself if nothing more is known).
+template <bool Up, class F>
+double guided_flip(F& test, double lo, double hi, double x_bad, double m_bad) {
+    auto ok = [&](double x) { return test(x).ok; };
+    auto known_bad = [&](double x) { return Up ? x >= x_bad : x <= x_bad; };
+    // The bisection itself up to its first passing point (the other end is never tested)...
+    double l = lo, h = hi, m_ok = 0.0;
+    int i = 0;
+    bool found = false;
+    for (; more(i, l, h) && !found; ++i) {
+        // After a run of failures, the last point the halvings would reach: where it fails
+        // too, no halving point passes (the kept end is the answer, untested as bisection
+        // leaves it). Some searches pass nowhere (a block too short to start and stop in:
+        // 64 % of lcnc__tort.ngc's), and bisection tests 48 points to say so.
+        if (i == nowhere_after) {
+            double el = l, eh = h, last = 0.0;
+            bool any = false;
+            for (int k = i; more(k, el, eh); ++k) last = other<Up>(el, eh) = 0.5 * (el + eh), any = true;
+            if (any && (known_bad(last) || !test(last).ok)) return kept<Up>(l, h);
+        }
+        const double mid = 0.5 * (l + h);
+        if (known_bad(mid)) {
+            other<Up>(l, h) = mid;
+            continue;
+        }
+        const Probe p = test(mid);
+        if (p.ok) kept<Up>(l, h) = mid, m_ok = p.margin, found = true;
+        else other<Up>(l, h) = mid, x_bad = mid, m_bad = p.margin;
+    }
+    if (!found) return kept<Up>(l, h);
+    // ... then the rest on the flip.
+    if (const auto answer = replay<Up>(test, l, h, i, more, true, kept<Up>(l, h), m_ok, x_bad, m_bad, flip_eps(l, h)))
+        return *answer;
+    return bisect<Up>(ok, lo, hi);
+}
+
+}  // namespace detail
+
 // Where ok flips in [lo, hi]. Up: ok true up to the flip, false beyond; the largest x that passes
 // (lo if none). Not Up: ok false up to it, true beyond; the smallest (hi if none). `test` returns
 // bool (bisection) or Probe (guided, the same answer where the test is monotone).
 template <bool Up, class F>
 double flip(F&& test, double lo, double hi) {
     constexpr bool guided = std::is_same_v<std::invoke_result_t<F&, double>, Probe>;
-    auto ok = [&](double x) {
-        if constexpr (guided) return test(x).ok;
-        else return test(x);
-    };
     if (!(hi > lo)) return Up ? lo : hi;
-    auto more = [](int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; };
-    auto bisect = [&](double l, double h) {
-        for (int i = 0; more(i, l, h); ++i) {
-            const double mid = 0.5 * (l + h);
-            (ok(mid) ? kept<Up>(l, h) : other<Up>(l, h)) = mid;
-        }
-        return kept<Up>(l, h);
-    };
     const double end = Up ? hi : lo;  // the end tested first
     if constexpr (!guided) {
         if (test(end)) return end;
-        return bisect(lo, hi);
+        return detail::bisect<Up>(test, lo, hi);
     } else {
         const Probe first = test(end);
         if (first.ok) return end;
-        // The bisection itself up to its first passing point (the other end is never tested)...
-        double l = lo, h = hi, m_ok = 0.0, m_bad = first.margin;
-        int i = 0;
-        bool found = false;
-        for (; more(i, l, h) && !found; ++i) {
-            // After a run of failures, the last point the halvings would reach: where it fails
-            // too, no halving point passes (the kept end is the answer, untested as bisection
-            // leaves it). Some searches pass nowhere (a block too short to start and stop in:
-            // 64 % of lcnc__tort.ngc's), and bisection tests 48 points to say so.
-            if (i == nowhere_after) {
-                double el = l, eh = h, last = 0.0;
-                bool any = false;
-                for (int k = i; more(k, el, eh); ++k) last = other<Up>(el, eh) = 0.5 * (el + eh), any = true;
-                if (any && !test(last).ok) return kept<Up>(l, h);
-            }
-            const double mid = 0.5 * (l + h);
-            const Probe p = test(mid);
-            if (p.ok) kept<Up>(l, h) = mid, m_ok = p.margin, found = true;
-            else other<Up>(l, h) = mid, m_bad = p.margin;
-        }
-        if (!found) return kept<Up>(l, h);
-        // ... then the rest on the flip.
-        if (const auto answer = replay<Up>(test, l, h, i, more, m_ok, m_bad, flip_eps(l, h))) return *answer;
-        return bisect(lo, hi);
+        return detail::guided_flip<Up>(test, lo, hi, end, first.margin);
     }
 }
 
@@ -173,23 +190,25 @@ double highest(F&& test, double lo, double hi) {
 // margin jumps there and ITP cannot help, so the search was plain bisection, 48 tests): hi, then
 // guess and a point 2 eps above it are tested; where those two bracket the flip, bisection's
 // halvings are replayed on the bracket (the same answer where the test is monotone, in about five
-// tests); else highest() as it is.
+// tests); else the guided search goes on from what those tests found.
 template <class F>
 double highest(F&& test, double lo, double hi, double guess) {
     if (!(hi > lo) || !(guess > lo && guess < hi)) return highest(test, lo, hi);
     const Probe top = test(hi);
     if (top.ok) return hi;
-    const double eps = flip_eps(lo, hi), above = guess + 2.0 * eps;
     const Probe at = test(guess);
-    if (at.ok && above < hi) {
+    if (!at.ok) return detail::guided_flip<true>(test, lo, hi, guess, at.margin);
+    const double eps = flip_eps(lo, hi), above = guess + 2.0 * eps;
+    double x_ok = guess, m_ok = at.margin, x_bad = hi, m_bad = top.margin;
+    if (above < hi) {
         const Probe over = test(above);
-        if (!over.ok) {
-            auto more = [](int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; };
-            if (const auto answer = replay<true>(test, lo, hi, 0, more, false, guess, at.margin, above, over.margin, eps))
-                return *answer;
-        }
+        if (over.ok) x_ok = above, m_ok = over.margin;
+        else x_bad = above, m_bad = over.margin;
     }
-    return highest(test, lo, hi);
+    if (const auto answer = replay<true>(test, lo, hi, 0, detail::more, false, x_ok, m_ok, x_bad, m_bad, eps))
+        return *answer;
+    auto ok = [&](double x) { return test(x).ok; };
+    return detail::bisect<true>(ok, lo, hi);
 }
 
 // Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
