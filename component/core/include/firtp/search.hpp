@@ -41,9 +41,10 @@ void narrow(F& probe, double& x_ok, double m_ok, double& x_bad, double m_bad, do
     if (!(b - a > 2.0 * eps)) return;
     const double k1 = 0.2 / (b - a);  // the method's kappa_1; kappa_2 = 2, n_0 = 1
     const int n_max = static_cast<int>(std::ceil(std::log2((b - a) / (2.0 * eps)))) + 1;
-    for (int j = 0; j < n_max && b - a > 2.0 * eps; ++j) {
+    double reach = eps * std::ldexp(1.0, n_max);  // eps 2^(n_max - j): halved each step, exactly
+    for (int j = 0; j < n_max && b - a > 2.0 * eps; ++j, reach *= 0.5) {
         const double half = 0.5 * (a + b);
-        const double r = eps * std::ldexp(1.0, n_max - j) - 0.5 * (b - a);
+        const double r = reach - 0.5 * (b - a);
         const double delta = std::max(k1 * (b - a) * (b - a), eps);  // past a flip found to rounding
         double falsi = half;
         if ((ya >= 0.0) != (yb >= 0.0)) falsi = (yb * a - ya * b) / (yb - ya);
