@@ -199,9 +199,11 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
     auto ok = [&](double Tk, double f) { return probe(Tk, f).ok; };
     constexpr int steps = 14;
     const double estimate = std::clamp(overlap_symmetric(*chain_, epsilon, feed, beta), 0.0, Tk_high);
-    search::Probe at_high{true, 0.0};  // Tk_high's test at the feed, where it was made
+    std::optional<search::Probe> hi_failed;  // hi's test at the feed, where it was made and failed
     if (estimate >= Tk_high || beta < shallow) {
-        if ((at_high = probe(Tk_high, feed)).ok) return Choice{Tk_high, feed};
+        const search::Probe at_high = probe(Tk_high, feed);
+        if (at_high.ok) return Choice{Tk_high, feed};
+        hi_failed = at_high;
     }
     if (beta < shallow && ok(Tk_high, feed * min_feed_fraction)) {
         const auto full = highest_feasible_feed([&](double f) { return ok(Tk_high, f); }, feed, steps, slowest);
@@ -209,12 +211,12 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
     }
     // Bracket below the estimate, then bisect.
     double lo = 0.0, hi = Tk_high;
-    search::Probe at_lo, at_hi = at_high;  // at_hi.ok: hi not tested
+    search::Probe at_lo;
     if (estimate > 0.0) {
         if (estimate < Tk_high && (at_lo = probe(estimate, feed)).ok) {
             lo = estimate;
         } else {
-            if (estimate < Tk_high) hi = estimate, at_hi = at_lo;
+            if (estimate < Tk_high) hi = estimate, hi_failed = at_lo;
             if ((at_lo = probe(estimate * (15.0 / 16.0), feed)).ok) lo = estimate * (15.0 / 16.0);
         }
     }
@@ -222,7 +224,7 @@ std::optional<PaperPlanner::Choice> PaperPlanner::search(const AxisVector& delta
         // 12 halvings (to Td / 4096 at most), guided by the corners' slack (search.hpp); from
         // both ends where hi failed (the estimate is close: the flip is found in a few tests).
         auto test = [&](double Tk) { return probe(Tk, feed); };
-        lo = !at_hi.ok && lo < hi ? search::halvings(test, lo, at_lo.margin, hi, at_hi.margin, 12)
+        lo = hi_failed && lo < hi ? search::halvings(test, lo, at_lo.margin, hi, hi_failed->margin, 12)
                                   : search::halvings(test, lo, at_lo.margin, hi, 12);
         return Choice{lo, feed};
     }

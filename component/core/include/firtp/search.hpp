@@ -113,10 +113,12 @@ std::optional<double> replay(F& test, double l, double h, int i, More&& more, do
 
 namespace detail {
 
+// flip()'s halvings: 48 at most, to `resolution` of the upper end.
 inline bool more(int i, double l, double h) { return i < bisection_steps && h - l > resolution * h; }
 
-template <bool Up, class F>
-double bisect(F& ok, double l, double h) {
+// Plain bisection of [l, h] while more(i, l, h): the kept end.
+template <bool Up, class F, class More = decltype(more)&>
+double bisect(F& ok, double l, double h, More&& more = detail::more) {
     for (int i = 0; more(i, l, h); ++i) {
         const double mid = 0.5 * (l + h);
         (ok(mid) ? kept<Up>(l, h) : other<Up>(l, h)) = mid;
@@ -218,17 +220,6 @@ double lowest(F&& test, double lo, double hi) {
     return flip<false>(test, lo, hi);
 }
 
-namespace detail {
-template <class F>
-double plain_halvings(F& test, double lo, double hi, int steps) {
-    for (int i = 0; i < steps; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (test(mid).ok ? lo : hi) = mid;
-    }
-    return lo;
-}
-}  // namespace detail
-
 // `steps` halvings of [lo, hi] keeping the passing half, from lo that passed (margin m_lo; hi not
 // tested): where they end, lo if no point passes. Guided as highest(): the halvings up to the first
 // failing point, then the rest replayed on the flip.
@@ -246,7 +237,8 @@ double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
     }
     if (!failed) return l;
     if (const auto end = replay<true>(test, l, h, i, more, m_lo, m_h, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
-    return detail::plain_halvings(test, lo, hi, steps);
+    auto ok = [&](double x) { return test(x).ok; };
+    return detail::bisect<true>(ok, lo, hi, more);
 }
 
 // The same halvings where hi failed its test (margin m_hi): the flip is narrowed from the first
@@ -256,7 +248,8 @@ template <class F>
 double halvings(F&& test, double lo, double m_lo, double hi, double m_hi, int steps) {
     auto more = [steps](int i, double, double) { return i < steps; };
     if (const auto end = replay<true>(test, lo, hi, 0, more, m_lo, m_hi, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
-    return detail::plain_halvings(test, lo, hi, steps);
+    auto ok = [&](double x) { return test(x).ok; };
+    return detail::bisect<true>(ok, lo, hi, more);
 }
 
 }  // namespace firtp::search
