@@ -4,10 +4,13 @@
 // of the samples is compared. Issue 13 asks for none slower; this measures how far from that the
 // planner is (docs/BENCHMARKS.md):
 //
-//     firtp_cliffs [--programs N] [--seed S] [--list] [--times]
+//     firtp_cliffs [--programs N] [--seed S] [--list] [--times] [--check]
 //
 // --list prints each slower case: program index, what was raised, blocks, both cycle times.
 // --times prints every plan's cycle time (program, what was raised): two planners side by side.
+// --check measures every plan on its samples (support/case_ratios.hpp): each one outside its
+// limits or tolerances is printed, and the worst ratios at the end.
+#include "support/case_ratios.hpp"
 #include "support/random_machine.hpp"
 
 #include <firtp/trajectory.hpp>
@@ -58,16 +61,17 @@ void dump_case(const PlannerParameters& p, const std::vector<Block>& blocks, con
 int main(int argc, char** argv) {
     int programs = 150;
     std::uint64_t seed = 31;
-    bool list = false, times = false;
+    bool list = false, times = false, check = false;
     int dump = -1;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--list") == 0) list = true;
         else if (std::strcmp(argv[i], "--times") == 0) times = true;
+        else if (std::strcmp(argv[i], "--check") == 0) check = true;
         else if (i + 1 < argc && std::strcmp(argv[i], "--programs") == 0) programs = std::atoi(argv[++i]);
         else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) seed = std::strtoull(argv[++i], nullptr, 10);
         else if (i + 1 < argc && std::strcmp(argv[i], "--dump") == 0) dump = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list] [--times] [--dump K]\n");
+            std::fprintf(stderr, "usage: firtp_cliffs [--programs N] [--seed S] [--list] [--times] [--check] [--dump K]\n");
             return 2;
         }
     }
@@ -77,10 +81,27 @@ int main(int argc, char** argv) {
     double total = 0.0, log_total = 0.0;  // over every plan: to compare two planners on the same programs
     int plans = 0;
     std::mt19937_64 rng(seed);
-    auto cycle = [](const PlannerParameters& p, const std::vector<Block>& blocks) {
-        return plan_trajectory(p, AxisVector::Zero(), blocks).cycle_time;
+    test::CaseRatios worst_measured;
+    int measured = 0, outside = 0;
+    int k = 0;
+    const char* what = "base";
+    auto cycle = [&](const PlannerParameters& p, const std::vector<Block>& blocks) {
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+        if (check) {
+            const test::CaseRatios r = test::case_ratios(p, blocks, t);
+            ++measured;
+            if (!r.within())
+                ++outside, std::printf("program %d %s outside: corner %.6f v %.9f a %.9f j %.9f end %d rest %d\n", k, what, r.corner,
+                                       r.velocity, r.acceleration, r.jerk, r.end_exact, r.at_rest);
+            worst_measured.corner = std::max(worst_measured.corner, r.corner);
+            worst_measured.velocity = std::max(worst_measured.velocity, r.velocity);
+            worst_measured.acceleration = std::max(worst_measured.acceleration, r.acceleration);
+            worst_measured.jerk = std::max(worst_measured.jerk, r.jerk);
+        }
+        return t.cycle_time;
     };
-    for (int k = 0; k < programs; ++k) {
+    for (; k < programs; ++k) {
+        what = "base";
         const test::CliffsProgram drawn = test::cliffs_program(rng);
         const test::RandomCase& c = drawn.c;
         const double base = cycle(c.parameters, c.blocks);
@@ -97,6 +118,7 @@ int main(int argc, char** argv) {
             } else {
                 for (Block& b : blocks) b.tolerance *= 1.25;
             }
+            what = names[variant];
             const double raised = cycle(p, blocks);
             if (raised > 0.0) total += raised, log_total += std::log(raised), ++plans;
             if (times) std::printf("program %d %s %.6f\n", k, names[variant], raised);
@@ -116,6 +138,9 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("%d plans: cycle times sum %.6f s, geometric mean %.6f s\n", plans, total, std::exp(log_total / plans));
+    if (check)
+        std::printf("%d plans measured, %d outside: worst corner error %.6f of the tolerance, v %.9f a %.9f j %.9f of the limits\n",
+                    measured, outside, worst_measured.corner, worst_measured.velocity, worst_measured.acceleration, worst_measured.jerk);
     std::printf("| raised by 25 %% | programs | slower | worst slow-down |\n|---|---:|---:|---:|\n");
     for (std::size_t v = 0; v < 4; ++v)
         std::printf("| %s | %d | %d | %.1f %% |\n", names[v], tried[v], slower[v], 100.0 * worst[v]);
