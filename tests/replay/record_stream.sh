@@ -22,7 +22,7 @@ python3 - "$blocks" "$feed" "$path" > "$work/stream.ngc" <<'PY'
 import math, sys
 n, feed, path = int(sys.argv[1]), sys.argv[2], sys.argv[3]
 r = 2000.0
-print(f"G21 G90 G64 P0.01\nG0 X{r if path == 'spiral' else 0} Y0 Z0\nF{feed}")
+print(f"G21 G90 G64 P0.01 Q0\nG0 X{r if path == 'spiral' else 0} Y0 Z0\nF{feed}")
 for i in range(1, n):
     if path == "spiral":
         print(f"G1 X{r * math.cos(i / r):.4f} Y{r * math.sin(i / r):.4f} Z{i * 0.0001:.4f}")

@@ -57,17 +57,19 @@ AxisVector CanonRecorder::to_machine(const AxisVector& program) const {
 }
 
 AxisVector CanonRecorder::program_position() const {
-    AxisVector p = position_ - tool_ - g5x_;
+    AxisVector p = last_point() - tool_ - g5x_;
     rotate(p[0], p[1], -rotation_deg_);
     return from_mm(p - g92_);
 }
 
 void CanonRecorder::set_feed_rate(double program_units_per_min) {
+    if (program_units_per_min != feed_written_ || program_units_per_min * scale_ != feed_) end_chain();
     feed_written_ = program_units_per_min;
     feed_ = program_units_per_min * scale_;
 }
 
 void CanonRecorder::set_blend(double program_tolerance) {
+    end_chain();
     termination_ = Termination::blend;
     tolerance_ = program_tolerance > 0.0 ? program_tolerance * scale_ : machine_.default_tolerance;
 }
@@ -80,7 +82,28 @@ double CanonRecorder::programmed_speed(bool linear) const {
 
 void CanonRecorder::straight(bool rapid, int line, const AxisVector& program_target) {
     if (error_) return;
+    if (!rapid) return feed_point(line, to_machine(program_target));
+    end_chain();
     line_block(rapid, line, to_machine(program_target));
+}
+
+void CanonRecorder::feed_point(int line, const AxisVector& target) {
+    if (termination_ != Termination::blend || !(naive_cam_ > 0.0)) {
+        end_chain();
+        return line_block(false, line, target);
+    }
+    if (!extends_chain(chain_, position_, target, naive_cam_)) end_chain();
+    chain_.push_back({target, line});
+    if (target.tail<6>() != position_.tail<6>()) end_chain();  // A B C U V W move alone
+}
+
+void CanonRecorder::end_chain() {
+    if (chain_.empty() || error_) return chain_.clear();
+    const ChainPoint last = chain_.back();
+    merged_ += chain_.size() - 1;
+    merged_farthest_ = std::max(merged_farthest_, chain_deviation(chain_, position_));
+    chain_.clear();
+    line_block(false, last.line, last.at);
 }
 
 // G0 as fast as the limits allow; G1 at F along the X Y Z length, else U V W, else A B C (deg/min).
@@ -114,6 +137,14 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
     const AxisVector end = to_machine(end_program);
     const AxisVector centre_point = to_machine(centre_program);
     const Eigen::Vector2d centre(centre_point[plane.first], centre_point[plane.second]);
+    // A short XY arc in G64 Q joins the straight feeds collected (one turn only: LinuxCNC drops
+    // the further turns of a P word there).
+    if (plane_code == 170 && termination_ == Termination::blend && std::abs(rotation) == 1)
+        if (const auto middle = naive_arc_middle(last_point(), end, centre, rotation > 0, naive_cam_)) {
+            feed_point(line, *middle);
+            return feed_point(line, end);
+        }
+    end_chain();
     if (rotation == 0) return line_block(false, line, end);  // LinuxCNC moves straight then
 
     Arc geometry;
@@ -193,7 +224,10 @@ void CanonRecorder::release() {
 }
 
 void CanonRecorder::finish() {
-    if (!error_) release();
+    end_chain();
+    if (error_) return;
+    release();
+    sink_.merged_moves(merged_, merged_farthest_);
 }
 
 // read_gcode keeps the program whole in memory, 120 bytes a block: a few short lines of many-chord
@@ -230,6 +264,7 @@ void CanonRecorder::coolant(EventKind kind) {
 }
 
 void CanonRecorder::event(EventKind kind, double value) {
+    end_chain();
     if (error_) return;
     const Place at = where_();
     if (event_waits(kind) && held_) {

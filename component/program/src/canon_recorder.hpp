@@ -4,6 +4,8 @@
 // exception: the first problem is kept (failed()) and later calls are ignored.
 #pragma once
 
+#include "naive_cam.hpp"
+
 #include <firtp/gcode.hpp>
 #include <firtp/machine.hpp>
 
@@ -35,14 +37,15 @@ public:
     void finish();
     std::size_t blocks() const { return blocks_; }  // made so far
     std::size_t events() const { return events_; }
+    std::size_t merged_moves() const { return merged_; }  // moves that joined a longer block (G64 Q)
 
     // Program units (mm or inch): conversions in and out of the canon.
     void set_units_inch(bool inch) { scale_ = inch ? 25.4 : 1.0; }
     bool units_inch() const { return scale_ != 1.0; }
     // Offsets in program units at the time of the call (kept in mm).
-    void set_g5x(const AxisVector& offset) { g5x_ = to_mm(offset); }
-    void set_g92(const AxisVector& offset) { g92_ = to_mm(offset); }
-    void set_tool_offset(const AxisVector& offset) { tool_ = to_mm(offset); }
+    void set_g5x(const AxisVector& offset) { end_chain(), g5x_ = to_mm(offset); }
+    void set_g92(const AxisVector& offset) { end_chain(), g92_ = to_mm(offset); }
+    void set_tool_offset(const AxisVector& offset) { end_chain(), tool_ = to_mm(offset); }
     void set_xy_rotation(double degrees) { rotation_deg_ = degrees; }
     // The current position as the interpreter sees it: program units, offsets removed.
     AxisVector program_position() const;
@@ -50,11 +53,17 @@ public:
 
     void set_feed_rate(double program_units_per_min);  // F (G93: the interpreter's rate for the move)
     double feed_rate_program() const { return feed_ / scale_; }
-    void set_feed_per_revolution(bool per_rev) { per_rev_ = per_rev; }
-    void set_exact_stop() { termination_ = Termination::exact_stop; tolerance_ = 0.0; }
+    void set_feed_per_revolution(bool per_rev) { end_chain(), per_rev_ = per_rev; }
+    void set_exact_stop() { end_chain(), termination_ = Termination::exact_stop, tolerance_ = 0.0; }
     void set_blend(double program_tolerance);  // 0: machine.default_tolerance
     bool exact_stop() const { return termination_ == Termination::exact_stop; }
     double tolerance_program() const { return tolerance_ / scale_; }
+    // G64 Q (naive_cam.hpp), program units; 0 collects nothing.
+    void set_naive_cam(double program_tolerance) { naive_cam_ = program_tolerance * scale_; }
+    double naive_cam_program() const { return naive_cam_ / scale_; }
+    // Hands the straight feeds collected so far to the planner as one block (a canon call LinuxCNC
+    // ends a collection at).
+    void end_chain();
 
     void straight(bool rapid, int line, const AxisVector& program_target);
     // ARC_FEED: ends and centre in the plane's (first, second) axes, `normal_end` the helix axis'
@@ -85,6 +94,8 @@ private:
     AxisVector from_mm(const AxisVector& mm) const;
     AxisVector to_machine(const AxisVector& program) const;  // emccanon's rotate_and_offset
     void line_block(bool rapid, int line, const AxisVector& target);
+    void feed_point(int line, const AxisVector& target);  // a straight feed, collected in G64 Q
+    const AxisVector& last_point() const { return chain_.empty() ? position_ : chain_.back().at; }
     void push(const AxisVector& target, double feed, Termination termination, double tolerance, MotionType type,
               int line);
     double programmed_speed(bool linear) const;
@@ -113,6 +124,10 @@ private:
     double dwell_ = 0.0;                  // G4 since the last block: the next block's dwell
     int direction_ = 0;                   // 1 clockwise, -1 counter-clockwise, 0 stopped
     int selected_tool_ = 0, tool_in_spindle_ = 0;
+    double naive_cam_ = 0.0;           // mm
+    std::vector<ChainPoint> chain_;    // straight feeds collected since position_
+    std::size_t merged_ = 0;
+    double merged_farthest_ = 0.0;     // mm: a joined move's end from its block
     bool flood_ = false, mist_ = false;
     std::optional<GcodeError> error_;
 };

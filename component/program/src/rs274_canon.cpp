@@ -97,12 +97,12 @@ void SET_MOTION_CONTROL_MODE(CANON_MOTION_MODE mode, double tolerance) {
     if (mode == CANON_CONTINUOUS) rec().set_blend(tolerance);
     else rec().set_exact_stop();
 }
-void SET_NAIVECAM_TOLERANCE(double) {}  // firtp plans every segment
+void SET_NAIVECAM_TOLERANCE(double tolerance) { rec().set_naive_cam(tolerance); }
 void SET_CUTTER_RADIUS_COMPENSATION(double) {}  // the interpreter offsets the path itself
 void START_CUTTER_RADIUS_COMPENSATION(int) {}
 void STOP_CUTTER_RADIUS_COMPENSATION() {}
 void START_SPEED_FEED_SYNCH(int, double, bool) { rec().refuse("spindle-synchronised motion (G33, G76, G95 sync)"); }
-void STOP_SPEED_FEED_SYNCH() {}
+void STOP_SPEED_FEED_SYNCH() { rec().end_chain(); }
 
 // Machining functions
 void ARC_FEED(int line, double first_end, double second_end, double first_axis, double second_axis, int rotation,
@@ -133,8 +133,8 @@ void START_SPINDLE_COUNTERCLOCKWISE(int, int) { rec().spindle_start(false); }
 void SET_SPINDLE_SPEED(int, double r) { rec().spindle_speed(r); }
 void STOP_SPINDLE_TURNING(int) { rec().spindle_stop(); }
 void SPINDLE_RETRACT() {}
-void ORIENT_SPINDLE(int, double, int) {}
-void WAIT_SPINDLE_ORIENT_COMPLETE(int, double) {}
+void ORIENT_SPINDLE(int, double, int) { rec().end_chain(); }
+void WAIT_SPINDLE_ORIENT_COMPLETE(int, double) { rec().end_chain(); }
 void LOCK_SPINDLE_Z() {}
 void USE_SPINDLE_FORCE() {}
 void USE_NO_SPINDLE_FORCE() {}
@@ -142,6 +142,7 @@ void USE_NO_SPINDLE_FORCE() {}
 // Tool functions: the table lives in libtooldata (loaded by the reader); index 0 is the spindle.
 void SET_TOOL_TABLE_ENTRY(int idx, int toolno, EmcPose offset, double diameter, double frontangle, double backangle,
                           int orientation) {
+    rec().end_chain();
     CANON_TOOL_TABLE t;
     if (tooldata_get(&t, idx) != IDX_OK) return;
     t.toolno = toolno;
@@ -165,24 +166,24 @@ void CHANGE_TOOL_NUMBER(int number) {
     if (tooldata_get(&t, number) == IDX_OK) tooldata_put(t, 0);
 }
 void RELOAD_TOOLDATA() {}
-void START_CHANGE() {}
+void START_CHANGE() { rec().end_chain(); }
 
 // Miscellaneous
 void CLAMP_AXIS(CANON_AXIS) {}
 void UNCLAMP_AXIS(CANON_AXIS) {}
 void COMMENT(const char*) {}
-void DISABLE_ADAPTIVE_FEED() {}
-void ENABLE_ADAPTIVE_FEED() {}
-void DISABLE_FEED_OVERRIDE() {}
-void ENABLE_FEED_OVERRIDE() {}
-void DISABLE_SPEED_OVERRIDE(int) {}
-void ENABLE_SPEED_OVERRIDE(int) {}
-void DISABLE_FEED_HOLD() {}
-void ENABLE_FEED_HOLD() {}
+void DISABLE_ADAPTIVE_FEED() { rec().end_chain(); }
+void ENABLE_ADAPTIVE_FEED() { rec().end_chain(); }
+void DISABLE_FEED_OVERRIDE() { rec().end_chain(); }
+void ENABLE_FEED_OVERRIDE() { rec().end_chain(); }
+void DISABLE_SPEED_OVERRIDE(int) { rec().end_chain(); }
+void ENABLE_SPEED_OVERRIDE(int) { rec().end_chain(); }
+void DISABLE_FEED_HOLD() { rec().end_chain(); }
+void ENABLE_FEED_HOLD() { rec().end_chain(); }
 void FLOOD_OFF() { rec().coolant(EventKind::coolant_off); }
 void FLOOD_ON() { rec().coolant(EventKind::flood_on); }
-void MESSAGE(char*) {}
-void LOG(char*) {}
+void MESSAGE(char*) { rec().end_chain(); }
+void LOG(char*) { rec().end_chain(); }
 void LOGOPEN(char*) {}
 void LOGAPPEND(char*) {}
 void LOGCLOSE() {}
@@ -201,13 +202,13 @@ void SET_OPTIONAL_PROGRAM_STOP(bool state) { optional_stop = state; }
 bool GET_OPTIONAL_PROGRAM_STOP() { return optional_stop; }
 void PROGRAM_END() { rec().event(EventKind::program_end); }
 void PROGRAM_STOP() { rec().event(EventKind::pause); }
-void SET_MOTION_OUTPUT_BIT(int) {}
-void CLEAR_MOTION_OUTPUT_BIT(int) {}
-void SET_AUX_OUTPUT_BIT(int) {}
-void CLEAR_AUX_OUTPUT_BIT(int) {}
-void SET_MOTION_OUTPUT_VALUE(int, double) {}
-void SET_AUX_OUTPUT_VALUE(int, double) {}
-int WAIT(int, int, int, double) { return 0; }
+void SET_MOTION_OUTPUT_BIT(int) { rec().end_chain(); }
+void CLEAR_MOTION_OUTPUT_BIT(int) { rec().end_chain(); }
+void SET_AUX_OUTPUT_BIT(int) { rec().end_chain(); }
+void CLEAR_AUX_OUTPUT_BIT(int) { rec().end_chain(); }
+void SET_MOTION_OUTPUT_VALUE(int, double) { rec().end_chain(); }
+void SET_AUX_OUTPUT_VALUE(int, double) { rec().end_chain(); }
+int WAIT(int, int, int, double) { return rec().end_chain(), 0; }
 int UNLOCK_ROTARY(int, int) { return 0; }
 int LOCK_ROTARY(int, int) { return 0; }
 void FINISH() {}
@@ -237,7 +238,7 @@ CANON_MOTION_MODE GET_EXTERNAL_MOTION_CONTROL_MODE() {
     return active != nullptr && rec().exact_stop() ? CANON_EXACT_PATH : CANON_CONTINUOUS;
 }
 double GET_EXTERNAL_MOTION_CONTROL_TOLERANCE() { return active != nullptr ? rec().tolerance_program() : 0.0; }
-double GET_EXTERNAL_MOTION_CONTROL_NAIVECAM_TOLERANCE() { return 0.0; }
+double GET_EXTERNAL_MOTION_CONTROL_NAIVECAM_TOLERANCE() { return active != nullptr ? rec().naive_cam_program() : 0.0; }
 void GET_EXTERNAL_PARAMETER_FILE_NAME(char* filename, int max_size) {
     std::snprintf(filename, static_cast<std::size_t>(max_size), "%s", parameter_file.c_str());
 }

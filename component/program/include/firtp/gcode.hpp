@@ -20,8 +20,10 @@
 //   applies G92, the XY rotation, G5x and the tool length offset as LinuxCNC's emccanon does, and
 //   G20 inches become mm (A B C stay degrees).
 // - SET_MOTION_CONTROL_MODE: G61/G61.1 stop exactly; G64 P p blends within p; G64 without P (and
-//   G64 P0, which the canon cannot tell apart) uses machine.default_tolerance. G64 Q (naive-CAM
-//   merging) is ignored: firtp plans every segment.
+//   G64 P0, which the canon cannot tell apart) uses machine.default_tolerance.
+// - G64 Q q (q = p when only P is given; Q0 turns it off): straight feeds within q of one segment
+//   become that segment, as LinuxCNC's task merges them before its planner sees them
+//   (naive_cam.hpp; Program::merged_moves counts the moves that joined a longer block).
 // - Spindle, tool, coolant, pause, dwell and end are ProgramEvents between blocks (program_event.hpp).
 //
 // Files the interpreter needs: the INI (machine.ini_file, else none), its parameter file
@@ -65,6 +67,8 @@ struct Program {
     AxisVector start = AxisVector::Zero();  // machine position before the first block
     std::vector<Block> blocks;              // machine units (mm, deg), feed in units/s, line = source line
     std::vector<ProgramEvent> events;       // in program order, before_block not decreasing
+    std::size_t merged_moves = 0;           // straight feeds that joined a longer block (G64 Q)
+    double merged_farthest = 0.0;           // mm: the farthest a joined move's end lies from its block
 };
 
 // Receives a program as the interpreter makes it, in program order: each block once it is final
@@ -75,6 +79,9 @@ public:
     virtual ~ProgramSink() = default;
     virtual void block(const Block& block) = 0;
     virtual void event(const ProgramEvent& event) = 0;
+    // At the end: how many straight feeds joined a longer block (G64 Q), and the farthest one's
+    // end lies from its block (mm).
+    virtual void merged_moves(std::size_t, double) {}
 };
 
 // `text` is read as the file `file_name` (errors name it); subroutines are looked up as for a file
