@@ -46,11 +46,33 @@ TEST(Rs274Events, InProgramOrderBetweenBlocksWithTheirLines) {
         EXPECT_EQ(e.line, expected[i].line) << i;
         EXPECT_EQ(e.file, "part.ngc") << i;
     }
-    // Motion stops before the dwell (block 0), the pauses (1, 2); coolant does not stop it (block 3).
+    // Motion stops before the coolant and the dwell (block 0), the pauses (1, 2). After the last
+    // block (3) nothing is marked: the end stops it, and firtp_tp sees its queue end there too.
     EXPECT_EQ(p.blocks[0].termination, Termination::exact_stop);
     EXPECT_EQ(p.blocks[1].termination, Termination::exact_stop);
     EXPECT_EQ(p.blocks[2].termination, Termination::exact_stop);
     EXPECT_EQ(p.blocks[3].termination, Termination::blend);
+}
+
+// LinuxCNC 2.9's task executes these only once motion has finished (emcTaskCheckPreconditions):
+// the block before each ends in an exact stop. A T word (the tool changer prepares), an output
+// synchronised with motion (M62) and an offset of a coordinate system not in use do not wait.
+TEST(Rs274Events, MotionWaitsWhereLinuxCNCsTaskWaits) {
+    struct Case {
+        const char* between;
+        bool waits;
+    };
+    for (const Case& c : {Case{"M8", true}, Case{"M7", true}, Case{"M9", true}, Case{"M5", true}, Case{"S2000", true},
+                          Case{"M3 S1000", true}, Case{"(MSG, check the clamp)", true}, Case{"G92 X0", true},
+                          Case{"G10 L2 P1 X1", true}, Case{"G10 L2 P2 X1", false}, Case{"G54", false}, Case{"G55", true},
+                          Case{"M64 P0", true}, Case{"M66 P0 L0", true}, Case{"T3", false}, Case{"M62 P0", false},
+                          Case{"F300", false}}) {
+        const Program p = parse(std::string("G64 P0.01 Q0\nG1 F600 X10\n") + c.between + "\nG1 X20 Y5\n");
+        SCOPED_TRACE(c.between);
+        ASSERT_EQ(p.blocks.size(), 2u);
+        EXPECT_EQ(p.blocks[0].termination, c.waits ? Termination::exact_stop : Termination::blend);
+        EXPECT_EQ(p.blocks[1].termination, Termination::blend);  // the last: nothing after it marks it
+    }
 }
 
 TEST(Rs274Events, WorkOffsetsG92AndUnitsGiveMachineCoordinates) {

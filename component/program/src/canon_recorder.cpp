@@ -97,6 +97,11 @@ void CanonRecorder::feed_point(int line, const AxisVector& target) {
     if (target.tail<6>() != position_.tail<6>()) end_chain();  // A B C U V W move alone
 }
 
+void CanonRecorder::motion_waits() {
+    end_chain();
+    wait_pending_ = held_.has_value();
+}
+
 void CanonRecorder::end_chain() {
     if (chain_.empty() || error_) return chain_.clear();
     const ChainPoint last = chain_.back();
@@ -210,6 +215,11 @@ void CanonRecorder::push(const AxisVector& target, double feed, Termination term
     block.line = line;
     block.dwell = dwell_;
     dwell_ = 0.0;
+    if (wait_pending_ && held_) {  // motion waited after the held block: it stops (the end stops anyway)
+        held_->termination = Termination::exact_stop;
+        held_->tolerance = 0.0;
+    }
+    wait_pending_ = false;
     release();
     held_ = block;
     ++blocks_;
@@ -248,7 +258,7 @@ void CanonRecorder::spindle_start(bool clockwise) {
 }
 
 void CanonRecorder::spindle_stop() {
-    if (direction_ == 0) return;  // M2, M30 and M5 of a stopped spindle: nothing happens
+    if (direction_ == 0) return motion_waits();  // M5 of a stopped spindle: no event, LinuxCNC still waits
     direction_ = 0;
     event(EventKind::spindle_stop);
 }
@@ -257,7 +267,7 @@ void CanonRecorder::coolant(EventKind kind) {
     if (kind == EventKind::flood_on) flood_ = true;
     if (kind == EventKind::mist_on) mist_ = true;
     if (kind == EventKind::coolant_off) {
-        if (!flood_ && !mist_) return;  // M9 calls both FLOOD_OFF and MIST_OFF: one event
+        if (!flood_ && !mist_) return motion_waits();  // M9 calls both FLOOD_OFF and MIST_OFF: one event
         flood_ = mist_ = false;
     }
     event(kind);
@@ -267,10 +277,7 @@ void CanonRecorder::event(EventKind kind, double value) {
     end_chain();
     if (error_) return;
     const Place at = where_();
-    if (event_waits(kind) && held_) {
-        held_->termination = Termination::exact_stop;
-        held_->tolerance = 0.0;
-    }
+    if (event_waits(kind)) motion_waits();
     if (kind == EventKind::dwell) {  // a stop of that length in the timeline (Block::dwell)
         if (!(value >= 0.0 && value <= max_dwell)) return fail(at.line, cat("G4 P", std::to_string(value), ": a dwell must be 0 to ", std::to_string(static_cast<int>(max_dwell)), " s"));
         dwell_ += value;

@@ -42,11 +42,12 @@ public:
     // Program units (mm or inch): conversions in and out of the canon.
     void set_units_inch(bool inch) { scale_ = inch ? 25.4 : 1.0; }
     bool units_inch() const { return scale_ != 1.0; }
-    // Offsets in program units at the time of the call (kept in mm).
-    void set_g5x(const AxisVector& offset) { end_chain(), g5x_ = to_mm(offset); }
-    void set_g92(const AxisVector& offset) { end_chain(), g92_ = to_mm(offset); }
-    void set_tool_offset(const AxisVector& offset) { end_chain(), tool_ = to_mm(offset); }
-    void set_xy_rotation(double degrees) { rotation_deg_ = degrees; }
+    // Offsets in program units at the time of the call (kept in mm). LinuxCNC's task applies a new
+    // one once motion has finished.
+    void set_g5x(const AxisVector& offset) { motion_waits(), g5x_ = to_mm(offset); }
+    void set_g92(const AxisVector& offset) { motion_waits(), g92_ = to_mm(offset); }
+    void set_tool_offset(const AxisVector& offset) { motion_waits(), tool_ = to_mm(offset); }
+    void set_xy_rotation(double degrees) { motion_waits(), rotation_deg_ = degrees; }
     // The current position as the interpreter sees it: program units, offsets removed.
     AxisVector program_position() const;
     AxisVector tool_offset_program() const { return from_mm(tool_); }
@@ -64,6 +65,11 @@ public:
     // Hands the straight feeds collected so far to the planner as one block (a canon call LinuxCNC
     // ends a collection at).
     void end_chain();
+    // A canon call LinuxCNC's task executes only once motion has finished (an event that waits,
+    // an operator message, an offset, an output now, ...): the block before ends in an exact stop
+    // when motion follows. After the last block nothing is marked: firtp_tp sees the end of its
+    // queue there, as at any program end.
+    void motion_waits();
 
     void straight(bool rapid, int line, const AxisVector& program_target);
     // ARC_FEED: ends and centre in the plane's (first, second) axes, `normal_end` the helix axis'
@@ -107,6 +113,7 @@ private:
     const MachineConfig& machine_;
     ProgramSink& sink_;
     std::optional<Block> held_;              // the newest block: a waiting event may still end it
+    bool wait_pending_ = false;              // motion waits after held_ (marked when a block follows)
     std::vector<ProgramEvent> held_events_;  // the events since it
     std::size_t blocks_ = 0, events_ = 0;
     std::function<Place()> where_;

@@ -21,18 +21,15 @@ std::string_view event_name(EventKind kind) {
     return "unknown";
 }
 
-// LinuxCNC waits for motion to finish before a tool change, a pause, a dwell and a spindle start
-// (which then waits for the spindle to reach its speed). The end needs no wait of its own: the
-// program's last block stops, whatever its termination.
+// LinuxCNC 2.9's task holds a tool change, a pause, a dwell, every spindle and coolant command
+// until motion has finished (emcTaskCheckPreconditions: WAITING_FOR_MOTION_AND_IO); a T word only
+// waits for the tool changer. The end needs no wait of its own: the program's last block stops,
+// whatever its termination.
 bool event_waits(EventKind kind) {
     switch (kind) {
-        case EventKind::tool_change:
-        case EventKind::pause:
-        case EventKind::optional_pause:
-        case EventKind::dwell:
-        case EventKind::spindle_clockwise:
-        case EventKind::spindle_counterclockwise: return true;
-        default: return false;
+        case EventKind::tool_select:
+        case EventKind::program_end: return false;
+        default: return true;
     }
 }
 

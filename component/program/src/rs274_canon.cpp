@@ -133,8 +133,8 @@ void START_SPINDLE_COUNTERCLOCKWISE(int, int) { rec().spindle_start(false); }
 void SET_SPINDLE_SPEED(int, double r) { rec().spindle_speed(r); }
 void STOP_SPINDLE_TURNING(int) { rec().spindle_stop(); }
 void SPINDLE_RETRACT() {}
-void ORIENT_SPINDLE(int, double, int) { rec().end_chain(); }
-void WAIT_SPINDLE_ORIENT_COMPLETE(int, double) { rec().end_chain(); }
+void ORIENT_SPINDLE(int, double, int) { rec().motion_waits(); }
+void WAIT_SPINDLE_ORIENT_COMPLETE(int, double) { rec().motion_waits(); }
 void LOCK_SPINDLE_Z() {}
 void USE_SPINDLE_FORCE() {}
 void USE_NO_SPINDLE_FORCE() {}
@@ -142,7 +142,7 @@ void USE_NO_SPINDLE_FORCE() {}
 // Tool functions: the table lives in libtooldata (loaded by the reader); index 0 is the spindle.
 void SET_TOOL_TABLE_ENTRY(int idx, int toolno, EmcPose offset, double diameter, double frontangle, double backangle,
                           int orientation) {
-    rec().end_chain();
+    rec().motion_waits();
     CANON_TOOL_TABLE t;
     if (tooldata_get(&t, idx) != IDX_OK) return;
     t.toolno = toolno;
@@ -166,14 +166,14 @@ void CHANGE_TOOL_NUMBER(int number) {
     if (tooldata_get(&t, number) == IDX_OK) tooldata_put(t, 0);
 }
 void RELOAD_TOOLDATA() {}
-void START_CHANGE() { rec().end_chain(); }
+void START_CHANGE() { rec().motion_waits(); }
 
 // Miscellaneous
 void CLAMP_AXIS(CANON_AXIS) {}
 void UNCLAMP_AXIS(CANON_AXIS) {}
 void COMMENT(const char*) {}
-void DISABLE_ADAPTIVE_FEED() { rec().end_chain(); }
-void ENABLE_ADAPTIVE_FEED() { rec().end_chain(); }
+void DISABLE_ADAPTIVE_FEED() { rec().motion_waits(); }
+void ENABLE_ADAPTIVE_FEED() { rec().motion_waits(); }
 void DISABLE_FEED_OVERRIDE() { rec().end_chain(); }
 void ENABLE_FEED_OVERRIDE() { rec().end_chain(); }
 void DISABLE_SPEED_OVERRIDE(int) { rec().end_chain(); }
@@ -182,7 +182,7 @@ void DISABLE_FEED_HOLD() { rec().end_chain(); }
 void ENABLE_FEED_HOLD() { rec().end_chain(); }
 void FLOOD_OFF() { rec().coolant(EventKind::coolant_off); }
 void FLOOD_ON() { rec().coolant(EventKind::flood_on); }
-void MESSAGE(char*) { rec().end_chain(); }
+void MESSAGE(char*) { rec().motion_waits(); }
 void LOG(char*) { rec().end_chain(); }
 void LOGOPEN(char*) {}
 void LOGAPPEND(char*) {}
@@ -204,11 +204,11 @@ void PROGRAM_END() { rec().event(EventKind::program_end); }
 void PROGRAM_STOP() { rec().event(EventKind::pause); }
 void SET_MOTION_OUTPUT_BIT(int) { rec().end_chain(); }
 void CLEAR_MOTION_OUTPUT_BIT(int) { rec().end_chain(); }
-void SET_AUX_OUTPUT_BIT(int) { rec().end_chain(); }
-void CLEAR_AUX_OUTPUT_BIT(int) { rec().end_chain(); }
+void SET_AUX_OUTPUT_BIT(int) { rec().motion_waits(); }
+void CLEAR_AUX_OUTPUT_BIT(int) { rec().motion_waits(); }
 void SET_MOTION_OUTPUT_VALUE(int, double) { rec().end_chain(); }
-void SET_AUX_OUTPUT_VALUE(int, double) { rec().end_chain(); }
-int WAIT(int, int, int, double) { return rec().end_chain(), 0; }
+void SET_AUX_OUTPUT_VALUE(int, double) { rec().motion_waits(); }
+int WAIT(int, int, int, double) { return rec().motion_waits(), 0; }
 int UNLOCK_ROTARY(int, int) { return 0; }
 int LOCK_ROTARY(int, int) { return 0; }
 void FINISH() {}
