@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <sstream>
 #include <string>
@@ -89,10 +90,14 @@ void expect_linuxcnc_rule(const Program& steps, const Program& joined, double q)
     EXPECT_GT(longest, 1u);
 }
 
+// FIRTP_RANDOM_SEED and FIRTP_RANDOM_SCALE as in the other randomized suites.
 TEST(NaiveCam, JoinsTheStepsTheRuleJoins) {
-    std::mt19937_64 rng(11);
+    const char* seed_text = std::getenv("FIRTP_RANDOM_SEED");
+    const char* scale_text = std::getenv("FIRTP_RANDOM_SCALE");
+    std::mt19937_64 rng(11 + (seed_text ? std::strtoull(seed_text, nullptr, 10) : 0));
+    const int count = 40 * (scale_text ? std::max(1, std::atoi(scale_text)) : 1);
     std::size_t steps = 0, blocks = 0;
-    for (int n = 0; n < 40; ++n) {
+    for (int n = 0; n < count; ++n) {
         const double noise = n % 2 == 0 ? 0.0 : 0.002 * (1 + n % 5);
         const double q = n % 3 == 0 ? 0.005 : 0.01;
         std::mt19937_64 a = rng, b = rng;
