@@ -126,11 +126,19 @@ double bisect(F& ok, double l, double h, More&& more = detail::more) {
     return kept<Up>(l, h);
 }
 
+// A replayed guided search's answer, or, where it found the test not monotone (none), plain
+// bisection of [lo, hi] while more(): the fallback every guided search shares.
+template <bool Up, class F, class More>
+double or_bisection(F& test, double lo, double hi, More&& more, const std::optional<double>& answer) {
+    if (answer) return *answer;
+    auto ok = [&](double x) { return test(x).ok; };
+    return bisect<Up>(ok, lo, hi, more);
+}
+
 // flip()'s guided search once the end it tests first has failed; x_bad (margin m_bad) is the
 // failing point nearest the other end known so far (that end itself if nothing more is known).
 template <bool Up, class F>
 double guided_flip(F& test, double lo, double hi, double x_bad, double m_bad) {
-    auto ok = [&](double x) { return test(x).ok; };
     auto known_bad = [&](double x) { return Up ? x >= x_bad : x <= x_bad; };
     // The bisection itself up to its first passing point (the other end is never tested)...
     double l = lo, h = hi, m_ok = 0.0;
@@ -158,9 +166,8 @@ double guided_flip(F& test, double lo, double hi, double x_bad, double m_bad) {
     }
     if (!found) return kept<Up>(l, h);
     // ... then the rest on the flip.
-    if (const auto answer = replay<Up>(test, l, h, i, more, true, kept<Up>(l, h), m_ok, x_bad, m_bad, flip_eps(l, h)))
-        return *answer;
-    return bisect<Up>(ok, lo, hi);
+    return or_bisection<Up>(test, lo, hi, more,
+                            replay<Up>(test, l, h, i, more, true, kept<Up>(l, h), m_ok, x_bad, m_bad, flip_eps(l, h)));
 }
 
 // highest()'s answer from a passing x_ok and a failing x_bad (margins m_ok, m_bad), hi failing:
@@ -168,9 +175,8 @@ double guided_flip(F& test, double lo, double hi, double x_bad, double m_bad) {
 // monotone.
 template <class F>
 double highest_within(F& test, double lo, double hi, double x_ok, double m_ok, double x_bad, double m_bad, double eps) {
-    if (const auto answer = replay<true>(test, lo, hi, 0, more, false, x_ok, m_ok, x_bad, m_bad, eps)) return *answer;
-    auto ok = [&](double x) { return test(x).ok; };
-    return bisect<true>(ok, lo, hi);
+    return or_bisection<true>(test, lo, hi, more,
+                              replay<true>(test, lo, hi, 0, more, false, x_ok, m_ok, x_bad, m_bad, eps));
 }
 
 }  // namespace detail
@@ -260,9 +266,8 @@ double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
         else h = mid, m_h = p.margin, failed = true;
     }
     if (!failed) return l;
-    if (const auto end = replay<true>(test, l, h, i, more, m_lo, m_h, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
-    auto ok = [&](double x) { return test(x).ok; };
-    return detail::bisect<true>(ok, lo, hi, more);
+    const double eps = 0.25 * std::ldexp(hi - lo, -steps);
+    return detail::or_bisection<true>(test, lo, hi, more, replay<true>(test, l, h, i, more, m_lo, m_h, eps));
 }
 
 // The same halvings where hi failed its test (margin m_hi): the flip is narrowed from the first
@@ -271,9 +276,8 @@ double halvings(F&& test, double lo, double m_lo, double hi, int steps) {
 template <class F>
 double halvings(F&& test, double lo, double m_lo, double hi, double m_hi, int steps) {
     auto more = [steps](int i, double, double) { return i < steps; };
-    if (const auto end = replay<true>(test, lo, hi, 0, more, m_lo, m_hi, 0.25 * std::ldexp(hi - lo, -steps))) return *end;
-    auto ok = [&](double x) { return test(x).ok; };
-    return detail::bisect<true>(ok, lo, hi, more);
+    const double eps = 0.25 * std::ldexp(hi - lo, -steps);
+    return detail::or_bisection<true>(test, lo, hi, more, replay<true>(test, lo, hi, 0, more, m_lo, m_hi, eps));
 }
 
 }  // namespace firtp::search
