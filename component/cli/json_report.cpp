@@ -94,7 +94,7 @@ nlohmann::json json_report(const PlanRun& run, const std::string& program_name, 
             {"cycle_time_s", run.trajectory.cycle_time},
             {"closed_form_cycle_time_s", run.parameters.fixed_chain ? json(run.closed_form_cycle_time) : json(nullptr)},
             {"feed_time_s", run.feed_time},
-            {"naive_cam", {{"joined_moves", run.program.merged_moves}, {"farthest_mm", run.program.merged_farthest}}},
+            {"naive_cam", {{"joined_moves", run.program.joined.moves}, {"farthest_mm", run.program.joined.farthest}}},
             {"corners", with_corners ? corners_json(run) : json::array()},
             {"events", events_json(run.program)},
             {"measured", measured_json(run)}};

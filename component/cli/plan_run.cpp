@@ -71,8 +71,7 @@ PlanRun prepare_spooled_plan(const PlanOptions& options) {
     run.program.file = options.program.string();
     auto spool = spool_program(options.program, run.machine, run.program.start);
     run.program.events = std::move(spool->events());
-    run.program.merged_moves = spool->merged_moves();
-    run.program.merged_farthest = spool->merged_farthest();
+    run.program.joined = spool->joined();
     run.blocks = spool->blocks();
     run.feed_time = spool->feed_time();
     run.points = PathPoints(std::shared_ptr<const ProgramSpool>(spool));

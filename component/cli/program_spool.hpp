@@ -25,9 +25,8 @@ public:
 
     void block(const Block& block) override;
     void event(const ProgramEvent& event) override { events_.push_back(event); }
-    void merged_moves(std::size_t moves, double farthest) override { merged_moves_ = moves, merged_farthest_ = farthest; }
-    std::size_t merged_moves() const { return merged_moves_; }
-    double merged_farthest() const { return merged_farthest_; }
+    void joined(const JoinedMoves& joined) override { joined_ = joined; }
+    const JoinedMoves& joined() const { return joined_; }
     // Every block written: readers may start. Throws std::runtime_error when a write failed.
     void close();
 
@@ -52,8 +51,7 @@ private:
     std::size_t blocks_ = 0, points_ = 1;
     double scale_ = 1.0, feed_time_ = 0.0;
     std::vector<ProgramEvent> events_;
-    std::size_t merged_moves_ = 0;
-    double merged_farthest_ = 0.0;
+    JoinedMoves joined_;
 };
 
 }  // namespace firtp::cli

@@ -72,9 +72,9 @@ void print_summary(std::ostream& out, const PlanRun& run, const std::string& pro
         << "machine      " << machine_text(run) << "\n"
         << "blocks       " << run.points.size() - 1 << " moving, " << run.corners.size() << " corners ("
         << exact << " exact stop)\n";
-    if (run.program.merged_moves > 0)  // G64 Q: as LinuxCNC's task joins them (naive_cam.hpp)
-        out << "naive CAM    " << run.program.merged_moves << " G1 moves joined longer blocks within G64 Q, as LinuxCNC "
-            << "joins them (Q0 keeps every move); farthest " << fixed_text(run.program.merged_farthest, 4)
+    if (run.program.joined.moves > 0)  // G64 Q: as LinuxCNC's task joins them (naive_cam.hpp)
+        out << "naive CAM    " << run.program.joined.moves << " G1 moves joined longer blocks within G64 Q, as LinuxCNC "
+            << "joins them (Q0 keeps every move); farthest " << fixed_text(run.program.joined.farthest, 4)
             << " mm from its block; corners and contour measured on the blocks\n";
     out
         << "cycle time   " << fixed_text(run.trajectory.cycle_time, 4) << " s (" << reference_time_text(run) << ")\n"

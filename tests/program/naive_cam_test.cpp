@@ -86,7 +86,7 @@ void expect_linuxcnc_rule(const Program& steps, const Program& joined, double q)
         k = end;
     }
     ASSERT_EQ(k + 1, points.size()) << "the blocks end where the steps end";
-    EXPECT_EQ(joined.merged_moves, steps.blocks.size() - joined.blocks.size());
+    EXPECT_EQ(joined.joined.moves, steps.blocks.size() - joined.blocks.size());
     EXPECT_GT(longest, 1u);
 }
 
@@ -106,7 +106,7 @@ TEST(NaiveCam, JoinsTheStepsTheRuleJoins) {
         rng = a;
         SCOPED_TRACE("program " + std::to_string(n));
         expect_linuxcnc_rule(every, joined, q);
-        EXPECT_EQ(every.merged_moves, 0u);
+        EXPECT_EQ(every.joined.moves, 0u);
         steps += every.blocks.size(), blocks += joined.blocks.size();
     }
     std::printf("%zu steps joined into %zu blocks\n", steps, blocks);
@@ -126,15 +126,15 @@ TEST(NaiveCam, AtMost101StepsABlock) {
     EXPECT_EQ(p.blocks[0].line, 3 + 100);
     EXPECT_EQ(p.blocks[1].line, 3 + 201);
     EXPECT_EQ(p.blocks[2].line, 3 + 249);
-    EXPECT_EQ(p.merged_moves, 247u);
-    EXPECT_LT(p.merged_farthest, 1e-12);
+    EXPECT_EQ(p.joined.moves, 247u);
+    EXPECT_LT(p.joined.farthest, 1e-12);
 }
 
 TEST(NaiveCam, QZeroG64AloneAndExactStopsKeepEveryStep) {
     for (const char* mode : {"G64 P0.01 Q0", "G64", "G64 P0", "G61", "G61.1"}) {
         const Program p = parse(std::string(mode) + "\nF600\n" + collinear(1, 50));
         EXPECT_EQ(p.blocks.size(), 50u) << mode;
-        EXPECT_EQ(p.merged_moves, 0u) << mode;
+        EXPECT_EQ(p.joined.moves, 0u) << mode;
     }
     // A step 0.015 mm off the line from X1 to X3: within Q 0.02, not within 0.01.
     const std::string bump = "F600\nG1 X1 Y0\nG1 X2 Y0.015\nG1 X3 Y0\n";
@@ -180,7 +180,7 @@ TEST(NaiveCam, ShortXYArcsJoinThroughTheirMiddle) {
     EXPECT_LT((p.blocks[0].target - at({{'X', 1.0 + h}, {'Y', 0.02 - h}})).norm(), 1e-12) << "the arc's middle";
     EXPECT_EQ(p.blocks[0].line, 4);
     EXPECT_EQ(p.blocks[1].target, at({{'X', 1.02}, {'Y', 1}}));
-    EXPECT_EQ(p.merged_moves, 2u);
+    EXPECT_EQ(p.joined.moves, 2u);
     // Chorded as with Q0: deviation 0.059 (R 0.2), the XZ plane, two turns.
     for (const char* arc : {"G3 X1.2 Y0.2 J0.2", "G18 G2 X1.02 Z0.02 K0.02", "G3 X1.02 Y0.02 J0.02 P2"}) {
         const std::string rest = std::string("F600\nG1 X1\n") + arc + "\n";

@@ -105,8 +105,8 @@ void CanonRecorder::motion_waits() {
 void CanonRecorder::end_chain() {
     if (chain_.empty() || error_) return chain_.clear();
     const ChainPoint last = chain_.back();
-    merged_ += chain_.size() - 1;
-    merged_farthest_ = std::max(merged_farthest_, chain_deviation(chain_, position_));
+    joined_.moves += chain_.size() - 1;
+    joined_.farthest = std::max(joined_.farthest, chain_deviation(chain_, position_));
     chain_.clear();
     line_block(false, last.line, last.at);
 }
@@ -237,7 +237,7 @@ void CanonRecorder::finish() {
     end_chain();
     if (error_) return;
     release();
-    sink_.merged_moves(merged_, merged_farthest_);
+    sink_.joined(joined_);
 }
 
 // read_gcode keeps the program whole in memory, 120 bytes a block: a few short lines of many-chord

@@ -37,7 +37,6 @@ public:
     void finish();
     std::size_t blocks() const { return blocks_; }  // made so far
     std::size_t events() const { return events_; }
-    std::size_t merged_moves() const { return merged_; }  // moves that joined a longer block (G64 Q)
 
     // Program units (mm or inch): conversions in and out of the canon.
     void set_units_inch(bool inch) { scale_ = inch ? 25.4 : 1.0; }
@@ -133,8 +132,7 @@ private:
     int selected_tool_ = 0, tool_in_spindle_ = 0;
     double naive_cam_ = 0.0;           // mm
     std::vector<ChainPoint> chain_;    // straight feeds collected since position_
-    std::size_t merged_ = 0;
-    double merged_farthest_ = 0.0;     // mm: a joined move's end from its block
+    JoinedMoves joined_;
     bool flood_ = false, mist_ = false;
     std::optional<GcodeError> error_;
 };

@@ -109,10 +109,7 @@ public:
     explicit Collect(Program& program) : program_(program) {}
     void block(const Block& block) override { program_.blocks.push_back(block); }
     void event(const ProgramEvent& event) override { program_.events.push_back(event); }
-    void merged_moves(std::size_t moves, double farthest) override {
-        program_.merged_moves = moves;
-        program_.merged_farthest = farthest;
-    }
+    void joined(const JoinedMoves& joined) override { program_.joined = joined; }
 
 private:
     Program& program_;

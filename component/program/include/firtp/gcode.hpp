@@ -23,7 +23,7 @@
 //   G64 P0, which the canon cannot tell apart) uses machine.default_tolerance.
 // - G64 Q q (q = p when only P is given; Q0 turns it off): straight feeds within q of one segment
 //   become that segment, as LinuxCNC's task merges them before its planner sees them
-//   (naive_cam.hpp; Program::merged_moves counts the moves that joined a longer block).
+//   (naive_cam.hpp; Program::joined counts the moves that joined a longer block).
 // - Spindle, tool, coolant, pause, dwell and end are ProgramEvents between blocks (program_event.hpp).
 //
 // Files the interpreter needs: the INI (machine.ini_file, else none), its parameter file
@@ -40,6 +40,7 @@
 #include <firtp/program_event.hpp>
 #include <firtp/types.hpp>
 
+#include <cstddef>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -62,13 +63,18 @@ private:
     int column_;
 };
 
+// Straight feeds G64 Q joined into longer blocks (naive_cam.hpp).
+struct JoinedMoves {
+    std::size_t moves = 0;  // feeds that joined a longer block
+    double farthest = 0.0;  // mm: the farthest a joined feed's end lies from its block
+};
+
 struct Program {
     std::string file;
     AxisVector start = AxisVector::Zero();  // machine position before the first block
     std::vector<Block> blocks;              // machine units (mm, deg), feed in units/s, line = source line
     std::vector<ProgramEvent> events;       // in program order, before_block not decreasing
-    std::size_t merged_moves = 0;           // straight feeds that joined a longer block (G64 Q)
-    double merged_farthest = 0.0;           // mm: the farthest a joined move's end lies from its block
+    JoinedMoves joined;                     // G64 Q
 };
 
 // Receives a program as the interpreter makes it, in program order: each block once it is final
@@ -79,9 +85,8 @@ public:
     virtual ~ProgramSink() = default;
     virtual void block(const Block& block) = 0;
     virtual void event(const ProgramEvent& event) = 0;
-    // At the end: how many straight feeds joined a longer block (G64 Q), and the farthest one's
-    // end lies from its block (mm).
-    virtual void merged_moves(std::size_t, double) {}
+    // At the end: the straight feeds G64 Q joined into longer blocks.
+    virtual void joined(const JoinedMoves&) {}
 };
 
 // `text` is read as the file `file_name` (errors name it); subroutines are looked up as for a file
