@@ -93,10 +93,7 @@ int main(int argc, char** argv) {
             if (!r.within())
                 ++outside, std::printf("program %d %s outside: corner %.6f v %.9f a %.9f j %.9f end %d rest %d\n", k, what, r.corner,
                                        r.velocity, r.acceleration, r.jerk, r.end_exact, r.at_rest);
-            worst_measured.corner = std::max(worst_measured.corner, r.corner);
-            worst_measured.velocity = std::max(worst_measured.velocity, r.velocity);
-            worst_measured.acceleration = std::max(worst_measured.acceleration, r.acceleration);
-            worst_measured.jerk = std::max(worst_measured.jerk, r.jerk);
+            worst_measured.take_worst(r);
         }
         return t.cycle_time;
     };

@@ -6,6 +6,7 @@
 // - the end exactly on the last point, at rest, no NaN;
 // and from the planner: nothing refused, no leg plan that failed to cover its block.
 // FIRTP_RANDOM_SCALE multiplies the counts for soak runs (ctest -L soak).
+#include "support/case_ratios.hpp"
 #include "support/random_machine.hpp"
 
 #include <firtp/measure.hpp>
@@ -20,13 +21,6 @@ using namespace firtp;
 
 namespace {
 
-// Every `step`-th sample, as a slower servo would see the same motion.
-std::vector<AxisState> decimate(const std::vector<AxisState>& samples, std::size_t step) {
-    std::vector<AxisState> out;
-    for (std::size_t k = 0; k < samples.size(); k += step) out.push_back(samples[k]);
-    return out;
-}
-
 struct Worst {
     double corner = 0.0, velocity = 0.0, acceleration = 0.0, jerk = 0.0;
     std::size_t programs = 0, blocks = 0, corners = 0;
@@ -34,26 +28,20 @@ struct Worst {
 
 void expect_within(const test::RandomCase& c, const Trajectory& t, Worst& worst) {
     const PlannerParameters& p = c.parameters;
-    std::vector<AxisVector> points{AxisVector::Zero()};
-    std::vector<const Block*> ending;
-    for (const Block& b : c.blocks)
-        if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target), ending.push_back(&b);
-    const Measured m = measure(t.samples, points, p.period);
+    // Per period and, where the period divides 1 ms, in 1 ms differences too.
+    const test::MeasuredCase mc = test::measure_case(p, c.blocks, t);
+    const Measured& m = mc.per_period;
     ASSERT_TRUE(m.finite);
     ASSERT_EQ(m.end_position, c.blocks.back().target);  // exact
     ASSERT_EQ(t.samples.back().velocity, AxisVector::Zero());
-    ASSERT_EQ(m.corner_errors.size(), points.size() < 2 ? 0u : points.size() - 2);
+    ASSERT_EQ(m.corner_errors.size(), mc.points.size() < 2 ? 0u : mc.points.size() - 2);
     for (std::size_t i = 0; i < m.corner_errors.size(); ++i) {
-        const Block& b = *ending[i];
-        const AxisVector in = points[i + 1] - points[i], out = points[i + 2] - points[i + 1];
-        if (b.termination != Termination::blend || in.normalized().dot(out.normalized()) > 1.0 - 1e-12) continue;
+        if (!mc.blended_turn(i)) continue;
+        const Block& b = *mc.ending[i];
         ASSERT_LE(m.corner_errors[i], b.tolerance) << "corner after line " << b.line;
         worst.corner = std::max(worst.corner, m.corner_errors[i] / b.tolerance);
         ++worst.corners;
     }
-    // 1 ms differences too, where the period divides 1 ms.
-    const auto step = static_cast<std::size_t>(std::lround(0.001 / p.period));
-    const Measured ms = measure(decimate(t.samples, step), points, static_cast<double>(step) * p.period);
     for (int a = 0; a < p.limits.axes; ++a) {
         const AxisLimits& l = p.limits.axis[a];
         const double slack = 1.0 + 1e-6;
@@ -64,8 +52,8 @@ void expect_within(const test::RandomCase& c, const Trajectory& t, Worst& worst)
                 ASSERT_LE(std::abs(s.jerk[a]), l.max_jerk * slack) << "axis " << a << " at " << s.time;
             }
         }
-        for (const Measured* d : {&m, &ms}) {
-            const double period = d == &m ? p.period : static_cast<double>(step) * p.period;
+        for (const Measured* d : {&m, &mc.per_ms}) {
+            const double period = d == &m ? mc.period : mc.ms_period;
             ASSERT_LE(d->max_velocity[a], l.max_velocity * slack) << "axis " << a << (d == &m ? " per period" : " per ms");
             ASSERT_LE(d->max_acceleration[a], l.max_acceleration * slack + test::difference_noise(t.samples, a, period, 2))
                 << "axis " << a;
