@@ -1,5 +1,6 @@
 #include "tp_core.hpp"
 
+#include <firtp/arc_chords.hpp>
 #include <firtp/parameters.hpp>
 #include <firtp/planner.hpp>
 #include <firtp/types.hpp>
@@ -109,7 +110,9 @@ struct Move {
     Pose start{}, end{};
     bool arc = false;
     Circle circle;
-    int chords = 1;
+    int chords = 1;            // an arc's chords (arc_chords.hpp); 1 for a line
+    int uniform = 1;           // ... the chord tolerance's equal-angle chords they come from
+    bool cut_ends = true;      // ... the end chords cut into pieces (not with the paper's chain)
     double path_length = 0.0;  // the length vel applies to (arc: the X Y Z helix)
     double vel = 0.0, acc = 0.0;
     double speed = 0.0;        // vel with the caps, fixed when planning starts
@@ -272,14 +275,15 @@ struct TpCore::Impl {
         Block b;
         const bool last = k + 1 == m.chords;
         if (m.arc && !last) {
-            const double fraction = static_cast<double>(k + 1) / m.chords;
+            const double fraction = graded_chord_end(k + 1, m.uniform, m.cut_ends);
             const Vec3 p = m.circle.point(fraction);
             b.target = to_vector(m.start) + (to_vector(m.end) - to_vector(m.start)) * fraction;
             b.target.head<3>() = Eigen::Map<const Eigen::Vector3d>(p.data());  // on the arc
         } else {
             b.target = to_vector(m.end);
         }
-        const double duration = (m.path_length / m.chords) / m.speed;
+        const double share = m.arc ? graded_chord_end(k + 1, m.uniform, m.cut_ends) - graded_chord_end(k, m.uniform, m.cut_ends) : 1.0;
+        const double duration = share * m.path_length / m.speed;
         const double length = (b.target - planner->goal()).norm();
         b.feed = length > min_block_length && duration > 0.0 ? length / duration : m.speed;  // shorter: skipped
         b.termination = last ? m.termination : Termination::blend;
@@ -378,7 +382,7 @@ struct TpCore::Impl {
         m.start = goal;
         m.end = r.end;
         m.arc = false;
-        m.chords = 1;
+        m.chords = m.uniform = 1;
         m.vel = r.vel;
         m.acc = std::isfinite(r.acc) ? r.acc : 0.0;
         m.speed = r.vel;
@@ -519,13 +523,15 @@ AddStatus TpCore::add_arc(const MoveRequest& r, const ArcGeometry& g) {
     const double ratio = I.s.chord_tolerance / (2.0 * radius);
     const double by_sagitta = ratio >= 1.0 ? 1.0 : std::ceil(c.angle / (4.0 * std::asin(std::sqrt(ratio))));
     const double by_turn = std::ceil(c.angle / (std::numbers::pi / 2) - 1e-9);
-    const double chords = std::max({1.0, by_sagitta, by_turn});
-    if (!(chords <= I.s.max_chords)) return AddStatus::too_many_chords;
+    const double uniform = std::max({1.0, by_sagitta, by_turn});
+    if (!(uniform + 2 * (arc_end_pieces - 1) <= I.s.max_chords)) return AddStatus::too_many_chords;
 
     Move& m = I.fill(r);
     m.arc = true;
     m.circle = c;
-    m.chords = static_cast<int>(chords);
+    m.uniform = static_cast<int>(uniform);
+    m.cut_ends = !I.wanted.fixed_chain;
+    m.chords = graded_chord_count(m.uniform, m.cut_ends);
     m.path_length = path;
     m.linear = true;
     I.accept();

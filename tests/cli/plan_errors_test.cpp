@@ -83,7 +83,7 @@ TEST(BadInput, ProgramBeyondMaxProgramBlocksNamesTheLine) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err, "firtp: " + (dir / "prog.ngc").string() +
                          ":2: the program needs more than 100 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 100): this arc's "
-                         "223 chords come after 1 block (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)\n");
+                         "229 chords come after 1 block (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)\n");
     EXPECT_EQ(dir.names(), (std::set<std::string>{"machine.ini", "prog.ngc"}));
 }
 

@@ -579,7 +579,7 @@ TEST(TpCore, NoFiltersWithoutLimitsOrTimes) {
 }
 
 // Without t1 every move is smoothed at the axis limits LinuxCNC sends after creation: a lone
-// move's steps take T1 = F / a on its axis and the jerk time T2 = a / j.
+// move starts and stops on the jerk-limited S-curve of its own step (sized_kernel, kernel.hpp).
 TEST(TpCore, LimitsSentAfterCreationSmoothEachMoveAtThem) {
     TpSettings s = diamond_settings();
     s.filter_times = {0.0, 0.0, 0.0, 0.0};
@@ -590,13 +590,14 @@ TEST(TpCore, LimitsSentAfterCreationSmoothEachMoveAtThem) {
     EXPECT_EQ(m.tp.stats().rebuilds, 1);  // nothing to build at creation; built at the first move
     EXPECT_EQ(m.tp.filter_delay(), 0.0);  // no fixed chain
     const auto moving = motion(m.samples);
-    // T1 = 200 / 5000 = 40 ms, T2 = 5000 / 1e5 = 50 ms: each step lasts T1 + T2 and its
-    // acceleration peaks at F / max(T1, T2) = 4000 (the jerk limit binds first); the move lasts
-    // L / F + T1 + T2.
-    EXPECT_NEAR(static_cast<double>(moving.size() - 1) * 0.001, 100.0 / 200.0 + 0.09, 0.002);
+    // The step of 200 mm/s is below a^2 / j = 250 mm/s: T1 = T2 = sqrt(F / j) = 44.7 ms, a
+    // triangle of acceleration peaking at sqrt(j F) = 4472 mm/s^2; the move lasts L / F + T1 + T2
+    // (the machine's shared jerk stage gave T1 = F / a = 40 ms, T2 = a / j = 50 ms and 4000 mm/s^2).
+    const double t = std::sqrt(200.0 / 100000.0);
+    EXPECT_NEAR(static_cast<double>(moving.size() - 1) * 0.001, 100.0 / 200.0 + 2.0 * t, 0.002);
     const firtp::Measured measured =
         firtp::measure(moving, std::vector<AxisVector>{vec(pose(0, 0)), vec(pose(100, 0))}, 0.001);
-    EXPECT_NEAR(measured.max_acceleration[0], 200.0 / 0.05, 40.0);
+    EXPECT_NEAR(measured.max_acceleration[0], 200.0 / t, 0.02 * 200.0 / t);  // (1 ms differences round the peak)
     EXPECT_LE(measured.max_jerk[0], 100000.0 * (1 + 1e-6));
     EXPECT_GE(measured.max_jerk[0], 100000.0 * 0.95);
 }

@@ -1,6 +1,7 @@
 // G2 / G3 arcs as chord blocks: geometry, direction per plane, helices, turns and feeds.
 #include "gcode_test_support.hpp"
 
+#include <firtp/arc_chords.hpp>
 #include <firtp/text_cat.hpp>
 
 #include <gtest/gtest.h>
@@ -30,10 +31,12 @@ Eigen::Index axis(char letter) {
 }
 
 // The chord rule: sagitta R (1 - cos(d / 2)) <= tol, at least 4 a turn, at least 1.
+// The chords of equal angle the tolerance needs, their end chords then cut into pieces
+// (arc_chords.hpp, tested in tests/core/arc_chords_test.cpp).
 int expected_chords(double sweep, double radius, double tol) {
     const double by_sagitta = std::ceil(sweep / (4.0 * std::asin(std::sqrt(tol / (2.0 * radius)))));
     const double by_turn = std::ceil(sweep / (pi / 2) - 1e-9);
-    return static_cast<int>(std::max({1.0, by_sagitta, by_turn}));
+    return firtp::graded_chord_count(static_cast<int>(std::max({1.0, by_sagitta, by_turn})));
 }
 
 // Every chord end on the circle and every chord's sagitta within the tolerance.
@@ -125,8 +128,8 @@ TEST(GcodeArc, ChordsAreOnTheCircleWithinTheSagittaTolerance) {
         EXPECT_EQ(p.blocks.back().target, at({{'X', 6.0}}));
     }
     m.arc_chord_tolerance = 100.0;  // sagitta no constraint: four chords a turn, one for a quarter
-    EXPECT_EQ(parse("G3 F600 X-1 Y0 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 2u);
-    EXPECT_EQ(parse("G3 F600 X1 Y0 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 4u);
+    EXPECT_EQ(parse("G3 F600 X-1 Y0 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 2u + 6u);  // 2 chords, ends in pieces
+    EXPECT_EQ(parse("G3 F600 X1 Y0 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 4u + 6u);
     EXPECT_EQ(parse("G3 F600 X0 Y1 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 1u);
     EXPECT_EQ(parse("G3 F600 X0.70711 Y0.70711 I-1 J0\n", m, at({{'X', 1.0}})).blocks.size(), 1u);
 }
@@ -135,7 +138,7 @@ TEST(GcodeArc, ChordToleranceComesFromTheIni) {
     const MachineConfig m =
         firtp::load_machine(firtp::IniFile::parse("[FIRTP]\nARC_CHORD_TOLERANCE = 0.05\n", "m.ini"));
     const Program p = parse("G3 F600 X0 Y10 I-10\n", m, at({{'X', 10.0}}));
-    EXPECT_EQ(static_cast<int>(p.blocks.size()), expected_chords(pi / 2, 10.0, 0.05));  // 8 instead of 56
+    EXPECT_EQ(static_cast<int>(p.blocks.size()), expected_chords(pi / 2, 10.0, 0.05));  // 8 + 6 instead of 56 + 6
     expect_on_circle(p, 'X', 'Y', 0.0, 0.0, 10.0, 0.05);
 }
 
@@ -243,7 +246,11 @@ TEST(GcodeArc, DurationsSumToArcLengthOverFeed) {
     const Program flat = parse("G3 F600 X0 Y10 I-10\n", firtp::default_machine(), at({{'X', 10.0}}));
     EXPECT_NEAR(total(durations(flat)), (pi / 2 * 10.0) / 10.0, 1e-12);
     const std::vector<double> each = durations(flat);
-    for (const double d : each) EXPECT_NEAR(d, each.front(), 1e-12);  // one speed along the arc
+    const std::vector<AxisVector> pts = points(flat);
+    for (std::size_t k = 0; k < each.size(); ++k) {  // one speed along the arc, whatever the chord's length
+        const double arc = 10.0 * (std::atan2(pts[k + 1][1], pts[k + 1][0]) - std::atan2(pts[k][1], pts[k][0]));
+        EXPECT_NEAR(each[k], arc / 10.0, 1e-12) << k;
+    }
 
     const Program helix = parse("G3 F600 X0 Y10 Z4 I-10 P2\n", firtp::default_machine(), at({{'X', 10.0}}));
     EXPECT_NEAR(total(durations(helix)), std::hypot(2.5 * pi * 10.0, 4.0) / 10.0, 1e-12);

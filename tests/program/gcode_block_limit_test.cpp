@@ -40,16 +40,16 @@ TEST(GcodeBlockLimit, LineBeyondTheLimitIsNamed) {
               "t.ngc:4: the program needs more than 3 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 3)");
 }
 
-// A full circle of radius 5 mm at the default 0.001 mm chords: 158 chords.
+// A full circle of radius 5 mm at the default 0.001 mm chords: 158 chords, 164 with its end chords in pieces.
 TEST(GcodeBlockLimit, ArcBeyondTheLimitIsRefusedBeforeItsChordsAreMade) {
     const std::string program = "G1 F600 X10\nX15\n G3 X15 Y0 I-5 J0\n";
-    EXPECT_EQ(parse(program, machine_with("MAX_PROGRAM_BLOCKS = 160\n")).blocks.size(), 160u);
-    EXPECT_EQ(parse_error(program, machine_with("MAX_PROGRAM_BLOCKS = 159\n")),
-              "t.ngc:3: the program needs more than 159 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 159): this arc's 158 "
+    EXPECT_EQ(parse(program, machine_with("MAX_PROGRAM_BLOCKS = 166\n")).blocks.size(), 166u);
+    EXPECT_EQ(parse_error(program, machine_with("MAX_PROGRAM_BLOCKS = 165\n")),
+              "t.ngc:3: the program needs more than 165 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 165): this arc's 164 "
               "chords come after 2 blocks (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)");
 }
 
-// A 22-byte line of 450 turns is 99,965 chords; with 10^5 blocks allowed the second such line is
+// A 22-byte line of 450 turns is 99,971 chords; with 10^5 blocks allowed the second such line is
 // refused at once. (Without a limit, 100 lines of 4,500 turns, 2.4 kB, asked for 10^8 blocks, 11 GB.)
 TEST(GcodeBlockLimit, ShortFileOfManyChordArcsIsRefused) {
     std::string program = "G1 F600 X10\n";
@@ -57,7 +57,7 @@ TEST(GcodeBlockLimit, ShortFileOfManyChordArcsIsRefused) {
     const firtp::MachineConfig m = machine_with("MAX_PROGRAM_BLOCKS = 100000\n");
     EXPECT_EQ(parse_error(program, m),
               "t.ngc:3: the program needs more than 100000 blocks ([FIRTP]MAX_PROGRAM_BLOCKS = 100000): this arc's "
-              "99965 chords come after 99966 blocks (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)");
+              "99971 chords come after 99972 blocks (a coarser [FIRTP]ARC_CHORD_TOLERANCE needs fewer)");
 }
 
 }  // namespace

@@ -40,6 +40,11 @@ double acceleration_time(const MachineLimits& limits, const AxisVector& dv) {
     return t;
 }
 
+Kernel sized_kernel(double v, double alpha, double beta) {
+    const double t1 = std::max(v * alpha, std::sqrt(v * beta));
+    return two_stage(t1, t1 > 0.0 ? v * beta / t1 : 0.0);
+}
+
 Kernel step_kernel(const MachineLimits& limits, const AxisVector& dv) {
     return two_stage(acceleration_time(limits, dv), jerk_time(limits));
 }

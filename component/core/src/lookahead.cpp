@@ -60,6 +60,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     rules_.limits = limits_;
     rules_.t2 = jerk_time(limits_);
     sparse_.t2 = rules_.t2;
+    sparse_.sparse = true;
     double jerk = 0.0, acc = 0.0;
     bool all_jerk = true;
     for (int i = 0; i < limits_.axes; ++i) {
@@ -72,6 +73,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
     jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
+    sized_ = all_jerk && rules_.t2 > 0.0;
     double machine_acc = 0.0, machine_jerk = 0.0;  // |a|, |j| the limit sweep lets through (its slack is 1e-7 of a limit)
     for (int i = 0; i < machine_.axes; ++i) {
         const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6), j = machine_.axis[i].max_jerk * (1.0 + 1e-6);
@@ -90,6 +92,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
 }
 
 void Lookahead::reset(const AxisVector& position) {
+    ramp_change_ = static_cast<std::size_t>(-1);
     head_ = 0;
     count_ = 0;
     goal_ = position;
@@ -103,6 +106,7 @@ void Lookahead::reset(const AxisVector& position) {
 
 Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
     Regime r = sparse_;
+    r.sparse = false;
     if (!(rules_.t2 > 0.0)) return r;
     r.t2 = 0.0;
     for (int i = 0; i < limits_.axes; ++i) {
@@ -146,18 +150,35 @@ Lookahead::Step Lookahead::junction_step(std::size_t i) const {
     return make_step(s.next_a * seg(i + 1).u - s.b * s.u, s.junction);
 }
 
-Lookahead::Step Lookahead::stop_step(std::size_t i) const { return ramp_step(i, -seg(i).b); }
+StepShape Lookahead::sized_shape(std::size_t i, double v, const AxisVector& direction) const {
+    const Segment& s = seg(i);
+    const Kernel k = sized_kernel(v, s.alpha, s.u_jerk);
+    return {k.a, direction, k.b, s.u_box, true};
+}
+
+Lookahead::Step Lookahead::sized_step(std::size_t i, double dv) const {
+    const Segment& s = seg(i);
+    Step st;
+    st.dv = dv * s.u;
+    st.kernel = sized_kernel(std::abs(dv), s.alpha, s.u_jerk);
+    st.box = st.kernel.a;
+    st.t2 = st.kernel.b;
+    st.own = true;
+    return st;
+}
+
+Lookahead::Step Lookahead::stop_step(std::size_t i) const { return sized(i) ? sized_step(i, -seg(i).b) : ramp_step(i, -seg(i).b); }
 
 Lookahead::Step Lookahead::entry_step(std::size_t i) const {
     if (i == 0 && frozen_.moving) return frozen_.step;
-    if (entry_is_stop(i)) return ramp_step(i, seg(i).a);
+    if (entry_is_stop(i)) return sized(i) ? sized_step(i, seg(i).a) : ramp_step(i, seg(i).a);
     return junction_step(i - 1);
 }
 
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     const Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
-    if (entry_is_stop(i)) return {a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start step
+    if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
     return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
@@ -165,7 +186,7 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return {b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop step
+    if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop
     return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box};
 }
 
@@ -275,7 +296,11 @@ void Lookahead::classify(std::size_t i) {
     // held at one speed would crawl through its whole length behind a slow junction.
     const Regime dense = dense_regime(s.tolerance);
     const bool in_window = s.length < s.feed_max * (dense.t2 + s.feed_max * box(s.u, dense));
-    s.dense = s.short_block && in_window && !s.sparse_only &&
+    // Between two stops a sized start and stop are the fastest plan there is, the jerk-limited
+    // rest-to-rest move. (At the end of the blocks known so far too: the next block classifies it
+    // again, and a start waits for the junction after its block to be settled.)
+    const bool alone = sized_ && entry_is_stop(i) && (i + 1 == count_ || s.kind == Kind::stop);
+    s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
               ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : sparse_;
     // (A stop after it, not only the end of the blocks known so far: the next block would undo it.
@@ -286,8 +311,18 @@ void Lookahead::classify(std::size_t i) {
 }
 
 void Lookahead::junction_caps(std::size_t i) {
+    // The ramps beside the junction change with it: their segments are planned again.
+    const Regime out = seg(i).out_ramp, in = seg(i + 1).in_ramp;
+    set_junction(i);
+    auto same = [](const Regime& x, const Regime& y) { return x.t2 == y.t2 && x.cap == y.cap; };
+    if (!same(seg(i).out_ramp, out)) ramp_change_ = std::min(ramp_change_, i);
+    else if (!same(seg(i + 1).in_ramp, in)) ramp_change_ = std::min(ramp_change_, i + 1);
+}
+
+void Lookahead::set_junction(std::size_t i) {
     Segment& s = seg(i);
     const Segment& n = seg(i + 1);
+    s.out_ramp = seg(i + 1).in_ramp = Regime{-1.0};
     if (stops_whatever_follows(s)) {
         s.kind = Kind::stop;
         s.corner_cap = 0.0;
@@ -318,6 +353,18 @@ void Lookahead::junction_caps(std::size_t i) {
         s.cap_bound = CornerBound::stop;
         s.junction = s.regime;
         s.turn_alpha = 0.0;
+        return;
+    }
+    // A corner in a dense run's regime: the ramps beside it on a sparse block share its jerk stage,
+    // their boxes up to J T2 (a box alone at that height keeps the jerk at J; where an axis swings
+    // the other way within T2 the exact check finds it, and they keep the run's caps: replan).
+    if (s.kind == Kind::corner && !s.junction.sparse) {
+        Regime ramp = s.junction;
+        for (int a = 0; a < limits_.axes && s.ramps_capped; ++a)
+            if (std::isfinite(ramp.cap[a]) && limits_.axis[a].max_jerk > 0.0)
+                ramp.cap[a] = std::min(limits_.axis[a].max_acceleration, limits_.axis[a].max_jerk * ramp.t2);
+        if (!s.dense) s.out_ramp = ramp;
+        if (!n.dense) seg(i + 1).in_ramp = ramp;
     }
 }
 
@@ -330,6 +377,7 @@ void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     set_turn(s, seg(i + 1).u);
     s.learned_cap = infinity;  // (what the checks learned at its old end)
+    s.ramps_capped = true;
     s.one_speed_start = false;
     s.kind = stops_whatever_follows(s) || seg(i + 1).dwell > 0.0
                  ? Kind::stop
@@ -354,6 +402,8 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     const Segment& s = la_.seg(i);
     in_.length = la_.seg_length(i);
     in_.alpha = s.alpha;
+    if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, s.in_ramp);
+    if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, s.out_ramp);
     in_.u = s.u;
     in_.u_unit_box = s.u_box;
     const bool moving = i == 0 && la_.frozen_.moving;
@@ -369,6 +419,7 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     // The exit step: a stop or a junction, box = b * its box at speed 1.
     in_.out = la_.exit_shape(i, 1.0);
     out_scale_ = in_.out.box;
+    out_sized_ = la_.exit_is_stop(i) && la_.sized(i);
     // Across a sparse corner the ramps on either side may swing an axis the other way: keep T2
     // between their boxes, half on each side, where the corner's own box does not.
     corner_in_ = i == 0 ? la_.frozen_.moving && la_.frozen_.junction : !la_.entry_is_stop(i);
@@ -380,7 +431,8 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
 const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     if (entry_scaled_) in_.in.box = a * in_scale_;
     else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
-    in_.out.box = b * out_scale_;
+    if (out_sized_) in_.out = la_.exit_shape(i_, b);
+    else in_.out.box = b * out_scale_;
     const double t2 = la_.rules_.t2;
     in_.in_reserve = corner_in_ && in_.in.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.in.box) : 0.0;
     in_.out_reserve = corner_out_ && in_.out.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.out.box) : 0.0;
@@ -396,10 +448,13 @@ int Lookahead::Fitting::key(double* out) const {
     };
     put(la_.rules_.t2);
     put(in_.length), put(in_.alpha), put(in_.u_unit_box), put_vector(in_.u);
+    put(in_.in_t2), put(in_.in_alpha), put(in_.out_t2), put(in_.out_alpha);
     put(in_.entry_elapsed);
-    put((entry_fixed_ ? 1 : 0) + (entry_scaled_ ? 2 : 0) + (corner_in_ ? 4 : 0) + (corner_out_ ? 8 : 0));
+    put((entry_fixed_ ? 1 : 0) + (entry_scaled_ ? 2 : 0) + (corner_in_ ? 4 : 0) + (corner_out_ ? 8 : 0) + (out_sized_ ? 16 : 0));
     if (entry_fixed_ || entry_scaled_) {
         put(entry_scaled_ ? in_scale_ : in_.in.box), put(in_.in.t2), put(in_.in.unit_box), put_vector(in_.in.direction);
+    } else if (la_.entry_is_stop(i_)) {  // a sized start: entry_shape() at each speed
+        put(la_.seg(i_).alpha), put(la_.seg(i_).u_jerk);
     } else {  // a dense junction: entry_shape() from the block before at each speed
         const Segment& prev = la_.seg(i_ - 1);
         put(prev.b), put_vector(prev.u), put(prev.junction.t2), put_vector(prev.junction.cap);
@@ -730,6 +785,8 @@ Result Lookahead::add(const Block& block) {
     s.end = block.target;
     s.u = delta / length;
     s.u_box = rules_.unit_box(s.u);
+    for (int a = 0; a < limits_.axes; ++a)
+        if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
     s.length = length;
     const double cap = velocity_cap(limits_, s.u);
     s.feed = std::min(block.feed, cap);
@@ -754,7 +811,7 @@ Result Lookahead::add(const Block& block) {
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
     // (the pass above may have stopped before it; the bounds are the same).
     if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
-    replan(changed);
+    replan(std::min(changed, ramp_change_));
     return Result::ok;
 }
 
@@ -847,7 +904,9 @@ void Lookahead::place_hold_stop() {
         s.brake = true;
         plan_segment(i, i == 0 ? a : entry_for(i));
         if (exit_is_stop(i)) return;  // an exact stop comes first: the hold stops there
-        if (!(s.b > 0.0)) {  // it brakes to rest right at its end: the hold stops there
+        // It brakes to rest at its end (or to a crawl there, which the next block would keep for
+        // its whole length: 1.6e-14 mm/s over 0.1 mm once): the hold stops there.
+        if (!(s.b > hold_crawl * std::max({s.a, s.p, a}))) {
             s.hold_end = true;
             junction_caps(i);
             backward(i);
@@ -890,9 +949,11 @@ void Lookahead::unsplit() {
         const double length = s.length + rest.length;
         const AxisVector start = s.start;
         const double dwell = s.dwell;
+        const Regime in_ramp = s.in_ramp;  // its entry's (the block before may be gone)
         s = rest;
         s.start = start;
         s.dwell = dwell;
+        s.in_ramp = in_ramp;
         s.length = length;
         erase(i + 1);
         if (i + 1 < count_) link(i);

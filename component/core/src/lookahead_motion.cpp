@@ -40,7 +40,7 @@ Lookahead::NextStep Lookahead::next_step() const {
     const double period = parameters_.period;
     NextStep n;
     if (!frozen_.moving) {  // the start step of the front segment, as early as allowed
-        n.step = ramp_step(0, s.a);
+        n.step = entry_step(0);
         n.kind = StepKind::start;
         n.speed_after = s.a;
         const double half = 0.5 * n.step.kernel.width();
@@ -64,10 +64,10 @@ Lookahead::NextStep Lookahead::next_step() const {
     }
     n.centre = frozen_centre() + s.x0;
     if (s.p != s.a) {
-        n.step = ramp_step(0, s.p - s.a);
+        n.step = in_ramp_step(0, s.p - s.a);
         n.speed_after = s.p;
     } else if (s.b != s.p) {
-        n.step = ramp_step(0, s.b - s.p);
+        n.step = out_ramp_step(0, s.b - s.p);
         n.speed_after = s.b;
     } else if (count_ == 1 || s.kind == Kind::stop) {
         n.step = stop_step(0);
@@ -293,11 +293,11 @@ void Lookahead::build_legs(std::size_t first) {
             centre = next_centre;
         };
         if (s.p != s.a) {
-            leg_to(ramp_step(i, s.p - s.a), t + s.x0);
+            leg_to(in_ramp_step(i, s.p - s.a), t + s.x0);
             speed = s.p;
         }
         if (s.b != s.p) {
-            leg_to(ramp_step(i, s.b - s.p), t + s.x0 + s.xp);
+            leg_to(out_ramp_step(i, s.b - s.p), t + s.x0 + s.xp);
             speed = s.b;
         }
         const bool stop = i + 1 == count_ || s.kind == Kind::stop;
@@ -313,7 +313,9 @@ bool Lookahead::same_motion(const Segment& s, const Segment& before) {
     return !before.unchecked && s.a == before.a && s.p == before.p && s.b == before.b && s.x0 == before.x0 && s.xp == before.xp &&
            s.x1 == before.x1 && s.rest == before.rest && s.next_a == before.next_a && s.kind == before.kind &&
            s.planned_stop == before.planned_stop && s.u == before.u && s.regime.t2 == before.regime.t2 &&
-           s.regime.cap == before.regime.cap && s.junction.t2 == before.junction.t2 && s.junction.cap == before.junction.cap;
+           s.regime.cap == before.regime.cap && s.regime.sparse == before.regime.sparse && s.junction.t2 == before.junction.t2 &&
+           s.junction.cap == before.junction.cap && s.in_ramp.t2 == before.in_ramp.t2 && s.in_ramp.cap == before.in_ramp.cap &&
+           s.out_ramp.t2 == before.out_ramp.t2 && s.out_ramp.cap == before.out_ramp.cap;
 }
 
 double Lookahead::first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const {
@@ -465,12 +467,15 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
 
 void Lookahead::replan(std::size_t first) {
     next_known_ = false;
+    first = std::min(first, ramp_change_);
+    ramp_change_ = static_cast<std::size_t>(-1);
     // Under way, a failed change falls back on the accepted plan (at rest there is nothing to keep).
     const bool fallback = frozen_.moving && (snapshot_taken_ || (held_ && !hold_stop_placed()));
     if (held_ && frozen_.moving && !hold_stop_placed()) {
         if (!snapshot_taken_) take_snapshot();
         place_hold_stop();
         first = 0;
+        ramp_change_ = static_cast<std::size_t>(-1);
     }
     snapshot_taken_ = false;
     if (first >= count_) {
@@ -526,13 +531,23 @@ void Lookahead::replan(std::size_t first) {
                 if (count_ >= 3) junction_caps(count_ - 3);
             }
             backward(count_ - 1);
-            from = count_ >= 2 ? count_ - 2 : 0;
+            from = std::min(count_ >= 2 ? count_ - 2 : 0, ramp_change_);
+            ramp_change_ = static_cast<std::size_t>(-1);
             // At rest, a plan restored from a hold brakes to a standstill and cannot start again
             // (machine 61, program 1689): nothing is under way to keep, so from rest again.
             if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
             forward(from);
             for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true;
             break;
+        }
+        // A limit failed next to ramps sharing a corner's jerk stage at J T2: an axis swings the
+        // other way within it whatever the speed. They keep the run's caps (h = J T2 / 2).
+        if (excess_ == 0.0 && seg(bad).ramps_capped && seg(bad).kind == Kind::corner && !seg(bad).junction.sparse) {
+            seg(bad).ramps_capped = false;
+            junction_caps(bad);
+            from = std::min({from, bad, ramp_change_});
+            ramp_change_ = static_cast<std::size_t>(-1);
+            continue;
         }
         // A block that ramped on from its start keeps the start's speed before its corner is
         // lowered (a start from rest used to keep one speed: random programs ran up to 1.2 % slower).
@@ -561,7 +576,8 @@ void Lookahead::replan(std::size_t first) {
                 if (k > 0) junction_caps(k - 1);
                 if (k + 1 < count_) junction_caps(k);
             }
-        from = std::min({from, bad, backward(bad)});
+        from = std::min({from, bad, backward(bad), ramp_change_});
+        ramp_change_ = static_cast<std::size_t>(-1);
     }
     // What bounded each junction the passes went over (for the report).
     for (std::size_t i = from; i + 1 < count_; ++i) {

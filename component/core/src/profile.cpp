@@ -45,10 +45,11 @@ struct StepView {
     bool none;      // no step (box 0, no direction)
     double unit_box;
     int role;       // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit (-1: none)
+    bool own;       // StepShape::own
 };
 
 StepView view(const StepShape& shape, int role = -1) {
-    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role};
+    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role, shape.own};
 }
 
 // GapMemo's entry for two roles (the gap is symmetric: the same products and sums); -1: none.
@@ -78,7 +79,7 @@ double spacing(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* mem
     const double in_order = 0.5 * ((y.box + y.t2) - (x.box + x.t2));
     if (x.none) return std::max(0.5 * y.box, in_order);  // no step
     if (y.none) return std::max(0.5 * x.box, in_order);
-    if (x.t2 != y.t2) return 0.5 * (x.box + x.t2 + y.box + y.t2);
+    if (x.t2 != y.t2 || x.own || y.own) return 0.5 * (x.box + x.t2 + y.box + y.t2);
     return 0.5 * (x.box + y.box) + (x.t2 == rules.t2 && gap(rules, x, y, memo) ? rules.t2 : 0.0);
 }
 
@@ -104,13 +105,19 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     std::array<int, 3> leg{};  // which of x0, xp, x1 each gap between steps is
     int n = 0;
     steps[n] = view(block.in, 0);
+    // A ramp's box and jerk stage: the block's own, or those of the junction's regime it shares.
+    auto ramp = [&](double dv, double alpha, double t2, int up, int down) {
+        const bool own = t2 < 0.0;
+        return StepView{std::abs(dv) * (own ? block.alpha : alpha), own ? rules.t2 : t2, &block.u, dv > 0.0 ? 1.0 : -1.0, false,
+                        block.u_unit_box, dv > 0.0 ? up : down, false};
+    };
     if (p != a) {
         speed[n] = a, leg[n] = 0;
-        steps[++n] = {std::abs(p - a) * block.alpha, rules.t2, &block.u, p > a ? 1.0 : -1.0, false, block.u_unit_box, p > a ? 1 : 2};
+        steps[++n] = ramp(p - a, block.in_alpha, block.in_t2, 1, 2);
     }
     if (b != p) {
         speed[n] = p, leg[n] = n == 0 ? 0 : 1;
-        steps[++n] = {std::abs(b - p) * block.alpha, rules.t2, &block.u, b > p ? 1.0 : -1.0, false, block.u_unit_box, b > p ? 1 : 2};
+        steps[++n] = ramp(b - p, block.out_alpha, block.out_t2, 1, 2);
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
     steps[++n] = view(block.out, 3);
@@ -129,11 +136,21 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
         x[0] = reserved(0, block.in_reserve);
         x[n - 1] = reserved(n - 1, block.out_reserve);
     }
+    // A ramp sharing a corner's jerk stage in a dense run's regime: its kernel ends by the
+    // corner's middle (its lead there would add to the corner's error).
+    auto clear_of_corner = [&](const StepView& corner, const StepView& r) {
+        return r.t2 == corner.t2 && r.t2 != rules.t2 && !corner.own && corner.box > 0.0 ? 0.5 * (r.box + r.t2) : 0.0;
+    };
+    if (n >= 2) {
+        x[0] = std::max(x[0], clear_of_corner(steps[0], steps[1]));
+        x[n - 1] = std::max(x[n - 1], clear_of_corner(steps[n], steps[n - 1]));
+    }
     x[0] = std::max(x[0], block.entry_elapsed + 0.5 * (steps[1].box + steps[1].t2));
     // Steps further apart than neighbours: boxes of opposite sign on an axis keep T2 between them.
     for (int i = 0; i + 2 <= n; ++i)
         for (int k = i + 2; k <= n; ++k) {
-            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || !gap(rules, steps[i], steps[k], block.gaps))
+            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || steps[i].own || steps[k].own ||
+                !gap(rules, steps[i], steps[k], block.gaps))
                 continue;
             double apart = 0.0;
             for (int m = i; m < k; ++m) apart += x[m];

@@ -3,6 +3,7 @@
 #include "arc.hpp"
 #include "move_speed.hpp"
 
+#include <firtp/arc_chords.hpp>
 #include <firtp/text_cat.hpp>
 
 #include <algorithm>
@@ -153,11 +154,13 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
     if (rotation == 0) return line_block(false, line, end);  // LinuxCNC moves straight then
 
     Arc geometry;
-    int chords = 0;
+    int uniform = 0, chords = 0;  // the tolerance's chords; those made (arc_chords.hpp)
+    const bool cut_ends = !filters_;  // (the paper's fixed chain keeps equal chords)
     try {
         // LinuxCNC has checked the radii; its tolerances are in interp_internal.hh.
         geometry = make_arc(plane, position_, end, centre, rotation < 0, std::abs(rotation), ArcTolerances{0.0, infinity, infinity});
-        chords = chord_count(geometry, machine_.arc_chord_tolerance);
+        uniform = chord_count(geometry, machine_.arc_chord_tolerance);
+        chords = graded_chord_count(uniform, cut_ends);
     } catch (const ArcError& e) {
         return fail(line, e.what());
     }
@@ -169,7 +172,10 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
     // Inside the arc the chords blend; in G61 / G61.1 with the machine's tolerance.
     const bool blend = termination_ == Termination::blend;
     const double inner_tolerance = blend ? tolerance_ : machine_.default_tolerance;
-    const double chord_path = geometry.helix_length() / chords;  // each chord's share of the arc
+    // Each chord's share of the arc: the speed is the arc's, so a chord lasts its share / speed.
+    auto share = [&](int k) {
+        return (graded_chord_end(k, uniform, cut_ends) - graded_chord_end(k - 1, uniform, cut_ends)) * geometry.helix_length();
+    };
     const double radius = std::min(geometry.start_radius, geometry.end_radius);
     double speed = programmed_speed(true);
     if (!(speed > 0.0))
@@ -178,16 +184,16 @@ void CanonRecorder::arc(int line, int plane_code, double first_end, double secon
     if (filters_) speed = std::min(speed, arc_speed_limit(*filters_, radius, inner_tolerance));
     AxisVector from = position_;
     for (int k = 1; k <= chords; ++k) {
-        const AxisVector to = geometry.point(static_cast<double>(k) / chords);
+        const AxisVector to = geometry.point(graded_chord_end(k, uniform, cut_ends));
         if (move_lengths(to - from).all <= zero_length)
             return fail(line, "the arc's chords would be shorter than 1e-9 mm: raise [FIRTP]ARC_CHORD_TOLERANCE");
-        speed = std::min(speed, speed_cap(to - from, chord_path, true, machine_.limits));
+        speed = std::min(speed, speed_cap(to - from, share(k), true, machine_.limits));
         from = to;
     }
     from = position_;
     for (int k = 1; k <= chords && !error_; ++k) {
-        const AxisVector to = geometry.point(static_cast<double>(k) / chords);
-        const double feed = move_lengths(to - from).all * speed / chord_path;  // duration = chord_path / speed
+        const AxisVector to = geometry.point(graded_chord_end(k, uniform, cut_ends));
+        const double feed = move_lengths(to - from).all * speed / share(k);  // duration = share / speed
         const bool last = k == chords;
         push(to, feed, last ? termination_ : Termination::blend, last ? tolerance_ : inner_tolerance, MotionType::feed,
              line);

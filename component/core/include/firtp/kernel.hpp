@@ -11,7 +11,9 @@
 // |dV_a| / A_a, so the step's acceleration reaches the limit on its most loaded axis (Eq. 4:
 // a = dV / T1), and T2, the machine's jerk time max A_a / J_a, shared by every step. A shared T2
 // makes the whole motion one moving average of a piecewise linear velocity (see planner.hpp),
-// which is what bounds the jerk. In the paper's mode every step uses the fixed chain (FirChain).
+// which is what bounds the jerk. A start from rest and a stop to rest share no moving average
+// with anything: each gets the narrowest kernel its own step allows (sized_kernel), the
+// jerk-limited S-curve of that step. In the paper's mode every step uses the fixed chain (FirChain).
 #pragma once
 
 #include <firtp/fir_chain.hpp>
@@ -116,6 +118,15 @@ inline double Kernel::step_position(double t) const {
 
 // T1 of a step dV: max over the axes of |dV_a| / A_a (0 for axes without an acceleration limit).
 double acceleration_time(const MachineLimits& limits, const AxisVector& dv);
+
+// The fastest two-stage kernel for one step alone (a start from rest or a stop, which share no
+// moving average): a step of speed v along a direction whose acceleration time per unit of speed
+// is `alpha` (max_a |u_a| / A_a) and whose jerk product per unit of speed is `beta`
+// (max_a |u_a| / J_a). Its stages T1 >= T2 keep T1 >= v alpha (acceleration) and T1 T2 >= v beta
+// (jerk): T1 = max(v alpha, sqrt(v beta)), T2 = v beta / T1. A small step ramps in and out at the
+// jerk limit (T1 = T2, a triangle of acceleration sqrt(J dV)): the jerk-limited S-curve of that step.
+// Never wider than two_stage(v alpha, T2_machine) when beta <= alpha T2_machine.
+Kernel sized_kernel(double v, double alpha, double beta);
 
 // The kernel of a step dV at `limits` (smoothing_limits: parameters.hpp): two_stage(acceleration_time, jerk_time).
 Kernel step_kernel(const MachineLimits& limits, const AxisVector& dv);

@@ -10,7 +10,8 @@
 //             override asks for.
 // Junction kinds: a stop (exact stop, reversal, end of the path), a corner at one speed on both
 // sides (where a block is long enough for ramps of its own), or, between two short blocks (dense
-// paths: chords, CAM output), a step that changes speed and direction at once.
+// paths: chords, CAM output), a step that changes speed and direction at once. A block between two
+// stops is never dense: its sized start and stop make the jerk-limited rest-to-rest move.
 //
 // What the passes guarantee by construction: the spacing rules of profile.hpp at every step, so
 // velocity, acceleration and jerk stay within the limits. What they estimate: the corner error
@@ -83,10 +84,12 @@ private:
     // reach. Sparse steps use the machine's T2 = max A / J and A. A dense run (dense.hpp) uses
     // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)): the run's accelerations may then swing
     // from -h to +h within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
-    // h T2_d^2 / 24 <= eps / 2.
+    // h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next to a corner in a run's regime share
+    // it (Segment::in_ramp); a sparse block's start and stop are sized to themselves (sized()).
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
+        bool sparse = false;  // the machine's own (sparse_)
     };
 
     struct Segment {
@@ -96,12 +99,19 @@ private:
         double feed_max = 0.0;   // at the highest override
         double alpha = 0.0;      // T1 per unit of speed change along u (in its regime)
         double u_box = -1.0;     // rules_.unit_box(u): the spacing rules' jerk gaps (any regime)
+        double u_jerk = 0.0;     // max_a |u_a| / J_a: a sized step's T1 T2 per unit of speed (sized_kernel)
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
         bool ramped_on = false;    // planned from its start (from rest or just started) to a plateau above it
         bool one_speed_start = false;  // that ramp on failed the check at its exit: it keeps its start's speed
         Regime regime;           // of its own steps (start, stop, ramps)
+        // A corner in a dense run's regime (a dense neighbour) shares its jerk stage with the
+        // ramps beside it on this block: the ramp after the entry (in_ramp) and the one before
+        // the exit (out_ramp) are smoothed in the corner's regime, their boxes up to J T2, and
+        // overlap the corner's kernel instead of waiting for it (arcs.ngc). t2 < 0: `regime`.
+        Regime in_ramp{-1.0}, out_ramp{-1.0};
+        bool ramps_capped = true;  // its shared ramps reach J T2; false once a check found a jerk there
         bool exact_stop = false;
         bool forced_stop = false;  // no checked plan passed it: the tool stops there
         bool hold_split = false;   // it ends where a hold stops the tool (the rest of the block follows)
@@ -148,7 +158,8 @@ private:
         double box = 0.0;
         double t2 = 0.0;
         Kernel kernel;
-        StepShape shape() const { return {box, dv.norm() > 0.0 ? AxisVector(dv.normalized()) : AxisVector::Zero(), t2}; }
+        bool own = false;  // sized to itself (StepShape::own)
+        StepShape shape() const { return {box, dv.norm() > 0.0 ? AxisVector(dv.normalized()) : AxisVector::Zero(), t2, -1.0, own}; }
     };
     // The step after the frozen one, as the plan has it now.
     enum class StepKind : std::uint8_t { ramp, junction, stop, start };
@@ -192,7 +203,9 @@ private:
     }
     // entry_shape(i, a) is entry_shape(i, 1) with its box times a: a start, a corner at one speed
     // (not the frozen step, not a dense junction, whose turn changes with the speed).
-    bool entry_scales(std::size_t i) const { return !(i == 0 && frozen_.moving) && (entry_is_stop(i) || seg(i - 1).kind != Kind::dense); }
+    bool entry_scales(std::size_t i) const {
+        return !(i == 0 && frozen_.moving) && (entry_is_stop(i) ? !sized(i) : seg(i - 1).kind != Kind::dense);
+    }
 
     // Regimes and steps.
     Regime dense_regime(double epsilon) const;
@@ -202,6 +215,16 @@ private:
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
+    const Regime& in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : seg(i).in_ramp; }
+    const Regime& out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : seg(i).out_ramp; }
+    Step in_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, in_ramp_regime(i)); }   // a -> p
+    Step out_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, out_ramp_regime(i)); }  // p -> b
+    // The start and the stop of a block in the machine's regime are sized to themselves
+    // (sized_kernel, kernel.hpp): nothing shares their moving average.
+    // (Not the stop a hold places: place_hold_stop finds it with the machine's shared jerk stage.)
+    bool sized(std::size_t i) const { return sized_ && seg(i).regime.sparse && !seg(i).hold_split && !seg(i).hold_end; }
+    StepShape sized_shape(std::size_t i, double v, const AxisVector& direction) const;
+    Step sized_step(std::size_t i, double dv) const;  // dv along u
     Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop)
     Step stop_step(std::size_t i) const;             // segment i's stop at its end
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
@@ -212,7 +235,8 @@ private:
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
     void set_turn(Segment& s, const AxisVector& next_u) const;  // s.turn towards next_u, and its turn_box
     void classify(std::size_t i);           // dense or not, from its length and its junctions
-    void junction_caps(std::size_t i);      // regime and corner cap of the junction after i
+    void junction_caps(std::size_t i);      // regime and corner cap of the junction after i (and ramp_change_)
+    void set_junction(std::size_t i);       // ... those themselves
     bool smooth(std::size_t i) const;       // junction i does not slow the blocks down
     bool slower_long(std::size_t k, std::size_t i) const;  // k is a long block slower than i
     double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
@@ -278,6 +302,7 @@ private:
         std::size_t i_;
         ProfileInput in_;
         bool entry_fixed_ = false;   // the frozen step: the same at any speed
+        bool out_sized_ = false;     // the exit is a sized stop: exit_shape() at each speed
         bool entry_scaled_ = false;  // box = a * in_scale_ (else: entry_shape() at each speed)
         double in_scale_ = 0.0, out_scale_ = 0.0;  // the exit's box = b * out_scale_
         bool corner_in_ = false, corner_out_ = false;
@@ -350,6 +375,10 @@ private:
     Timeline* timeline_;
     double max_width_ = 0.0;
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
+    bool sized_ = false;       // every axis limits jerk: starts and stops are sized (sized())
+    // The lowest segment whose ramps' regime junction_caps() changed since the last replan (its
+    // legs were planned for the old one); SIZE_MAX: none.
+    std::size_t ramp_change_ = static_cast<std::size_t>(-1);
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
     double rate_ = 1.0;

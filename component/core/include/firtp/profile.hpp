@@ -10,7 +10,11 @@
 //     at least T2 apart, so the moving average never sees the acceleration swing by more than
 //     J_a T2 within its window: the jerk is at most J_a.
 // Velocity stays between the legs' velocities. These are the spacing rules (spacing()); the
-// planner keeps them at every step, so the limits need no search.
+// planner keeps them at every step, so the limits need no search. Steps of different jerk stages,
+// and steps whose kernels are sized to themselves (starts and stops: sized_kernel), do not share
+// a moving average: their kernels stay apart. A ramp that shares a corner's jerk stage in a dense
+// run's regime ends its kernel by the corner's middle, so that its own lead does not add to the
+// corner's error there (the corner's speed is found for the corner's step alone, junction.hpp).
 #pragma once
 
 #include <firtp/parameters.hpp>
@@ -28,6 +32,7 @@ struct StepShape {
     AxisVector direction = AxisVector::Zero();  // of dV (unit or zero)
     double t2 = 0.0;
     double unit_box = -1.0;  // SpacingRules::unit_box(direction), where the caller knows it (< 0: not)
+    bool own = false;        // its kernel is sized to it alone (sized_kernel): it shares no moving average
 };
 
 // The shared constants of the spacing rules.
@@ -57,6 +62,11 @@ struct GapMemo {
 struct ProfileInput {
     double length = 0.0;
     double alpha = 0.0;          // T1 per unit of speed change along the block: max_a |u_a| / A_a
+    // A ramp next to a corner smoothed in a dense run's regime shares that regime's jerk stage
+    // (lookahead.hpp, Segment::in_ramp): the ramp a -> p takes the entry's (in_t2, in_alpha), the
+    // ramp p -> b the exit's. t2 < 0: alpha and the common jerk time.
+    double in_alpha = 0.0, in_t2 = -1.0;
+    double out_alpha = 0.0, out_t2 = -1.0;
     AxisVector u = AxisVector::Zero();
     double u_unit_box = -1.0;    // SpacingRules::unit_box(u), where the caller knows it (< 0: not)
     StepShape in;                // the step at the start (before the entry leg)
