@@ -69,7 +69,7 @@ void expect_within_limits(const PlannerParameters& p, const Trajectory& t, const
 }
 
 // A short move from rest to rest at the jerk limit alone takes (32 d / J)^(1/3): 68.4 ms for 1 mm
-// at 1e5 mm/s^3 (85 ms before, planned as a dense block alone). The samples end on the first
+// at 1e5 mm/s^3 (83 ms before, planned as a dense block alone). The samples end on the first
 // period after the motion.
 TEST(SizedSteps, AShortMoveTakesTheJerkLimitedRestToRestTime) {
     const PlannerParameters p = builtin_machine();
