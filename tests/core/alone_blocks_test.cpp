@@ -18,14 +18,6 @@ using firtp::test::xyz;
 
 namespace {
 
-PlannerParameters builtin_machine() {  // firtp plan's built-in machine
-    PlannerParameters p;
-    p.period = 0.001;
-    p.max_rate = 1.0;
-    p.limits = test::uniform_limits(300.0, 5000.0, 1e5);
-    return p;
-}
-
 // 40 blocks of 0.1 mm back and forth along X at 50 mm/s (each a reversal), then 0.1 mm along Y.
 std::vector<Block> reversals(double tolerance) {
     std::vector<Block> blocks;
@@ -40,7 +32,7 @@ std::vector<Block> reversals(double tolerance) {
 // program slower: 1.559 s at 0.01 mm, 1.850 s at 0.1 mm (+19 %). Now never slower (within one
 // period), and faster at each tolerance above 0.01 mm.
 TEST(AloneBlocks, ALooserToleranceNeverSlowsShortBlocksBetweenReversals) {
-    const PlannerParameters p = builtin_machine();
+    const PlannerParameters p = test::builtin_machine();
     double previous = 0.0;
     for (const double tolerance : {0.005, 0.01, 0.02, 0.05, 0.1}) {
         SCOPED_TRACE("tolerance " + std::to_string(tolerance));

@@ -44,14 +44,6 @@ TEST(SizedKernel, IsTheNarrowestTwoStageKernelWithinBothLimits) {
     }
 }
 
-PlannerParameters builtin_machine() {  // firtp plan's built-in machine
-    PlannerParameters p;
-    p.period = 0.001;
-    p.max_rate = 1.0;
-    p.limits = test::uniform_limits(300.0, 5000.0, 1e5);
-    return p;
-}
-
 Measured measured(const PlannerParameters& p, const std::vector<Block>& blocks, const Trajectory& t) {
     std::vector<AxisVector> points{AxisVector::Zero()};
     for (const Block& b : blocks) points.push_back(b.target);
@@ -72,7 +64,7 @@ void expect_within_limits(const PlannerParameters& p, const Trajectory& t, const
 // at 1e5 mm/s^3 (83 ms before, planned as a dense block alone). The samples end on the first
 // period after the motion.
 TEST(SizedSteps, AShortMoveTakesTheJerkLimitedRestToRestTime) {
-    const PlannerParameters p = builtin_machine();
+    const PlannerParameters p = test::builtin_machine();
     for (const double d : {0.05, 0.2, 1.0, 2.0}) {
         SCOPED_TRACE("length " + std::to_string(d));
         const std::vector<Block> blocks{line_to(xyz(d, 0.0), 300.0, 0.05, 1)};
@@ -90,7 +82,7 @@ TEST(SizedSteps, AShortMoveTakesTheJerkLimitedRestToRestTime) {
 // step alone, 2 sqrt(F / J) (63.2 ms at F100), where the machine's shared jerk stage made it
 // F / A + A / J (70 ms). Also along a diagonal, where each axis carries F / sqrt(2).
 TEST(SizedSteps, ALongMoveStartsAndStopsOnItsOwnSCurve) {
-    const PlannerParameters p = builtin_machine();
+    const PlannerParameters p = test::builtin_machine();
     for (const AxisVector& to : {xyz(20.0, 0.0), xyz(20.0, 20.0)}) {
         const std::vector<Block> blocks{line_to(to, 100.0, 0.05, 1)};
         const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);

@@ -18,6 +18,16 @@ inline MachineLimits uniform_limits(double v, double a, double j) {
     return l;
 }
 
+// firtp plan's built-in machine, X Y Z at 300 mm/s, 5000 mm/s^2, 1e5 mm/s^3, a 1 ms period, no
+// feed override above 100 %.
+inline PlannerParameters builtin_machine() {
+    PlannerParameters p;
+    p.period = 0.001;
+    p.max_rate = 1.0;
+    p.limits = uniform_limits(300.0, 5000.0, 1e5);
+    return p;
+}
+
 // Largest |value| / limit over every sample and axis (the chain's values at the samples): velocity
 // and acceleration, and jerk when `with_jerk`.
 inline double worst_ratio(const std::vector<AxisState>& samples, const MachineLimits& l, bool with_jerk = true) {
