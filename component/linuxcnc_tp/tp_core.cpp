@@ -524,13 +524,15 @@ AddStatus TpCore::add_arc(const MoveRequest& r, const ArcGeometry& g) {
     const double by_sagitta = ratio >= 1.0 ? 1.0 : std::ceil(c.angle / (4.0 * std::asin(std::sqrt(ratio))));
     const double by_turn = std::ceil(c.angle / (std::numbers::pi / 2) - 1e-9);
     const double uniform = std::max({1.0, by_sagitta, by_turn});
-    if (!(uniform + 2 * (arc_end_pieces - 1) <= I.s.max_chords)) return AddStatus::too_many_chords;
+    const bool cut_ends = !I.wanted.fixed_chain;
+    if (!(uniform <= I.s.max_chords && graded_chord_count(static_cast<int>(uniform), cut_ends) <= I.s.max_chords))
+        return AddStatus::too_many_chords;
 
     Move& m = I.fill(r);
     m.arc = true;
     m.circle = c;
     m.uniform = static_cast<int>(uniform);
-    m.cut_ends = !I.wanted.fixed_chain;
+    m.cut_ends = cut_ends;
     m.chords = graded_chord_count(m.uniform, m.cut_ends);
     m.path_length = path;
     m.linear = true;

@@ -314,9 +314,8 @@ void Lookahead::junction_caps(std::size_t i) {
     // The ramps beside the junction change with it: their segments are planned again.
     const Regime out = seg(i).out_ramp, in = seg(i + 1).in_ramp;
     set_junction(i);
-    auto same = [](const Regime& x, const Regime& y) { return x.t2 == y.t2 && x.cap == y.cap; };
-    if (!same(seg(i).out_ramp, out)) ramp_change_ = std::min(ramp_change_, i);
-    else if (!same(seg(i + 1).in_ramp, in)) ramp_change_ = std::min(ramp_change_, i + 1);
+    if (seg(i).out_ramp != out) ramp_change_ = std::min(ramp_change_, i);
+    else if (seg(i + 1).in_ramp != in) ramp_change_ = std::min(ramp_change_, i + 1);
 }
 
 void Lookahead::set_junction(std::size_t i) {
@@ -811,7 +810,7 @@ Result Lookahead::add(const Block& block) {
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
     // (the pass above may have stopped before it; the bounds are the same).
     if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
-    replan(std::min(changed, ramp_change_));
+    replan(changed);
     return Result::ok;
 }
 
@@ -904,8 +903,8 @@ void Lookahead::place_hold_stop() {
         s.brake = true;
         plan_segment(i, i == 0 ? a : entry_for(i));
         if (exit_is_stop(i)) return;  // an exact stop comes first: the hold stops there
-        // It brakes to rest at its end (or to a crawl there, which the next block would keep for
-        // its whole length: 1.6e-14 mm/s over 0.1 mm once): the hold stops there.
+        // It brakes to rest at its end, or to a crawl there (hold_crawl, as a dense junction below):
+        // the hold stops there.
         if (!(s.b > hold_crawl * std::max({s.a, s.p, a}))) {
             s.hold_end = true;
             junction_caps(i);

@@ -312,10 +312,8 @@ void Lookahead::build_legs(std::size_t first) {
 bool Lookahead::same_motion(const Segment& s, const Segment& before) {
     return !before.unchecked && s.a == before.a && s.p == before.p && s.b == before.b && s.x0 == before.x0 && s.xp == before.xp &&
            s.x1 == before.x1 && s.rest == before.rest && s.next_a == before.next_a && s.kind == before.kind &&
-           s.planned_stop == before.planned_stop && s.u == before.u && s.regime.t2 == before.regime.t2 &&
-           s.regime.cap == before.regime.cap && s.regime.sparse == before.regime.sparse && s.junction.t2 == before.junction.t2 &&
-           s.junction.cap == before.junction.cap && s.in_ramp.t2 == before.in_ramp.t2 && s.in_ramp.cap == before.in_ramp.cap &&
-           s.out_ramp.t2 == before.out_ramp.t2 && s.out_ramp.cap == before.out_ramp.cap;
+           s.planned_stop == before.planned_stop && s.u == before.u && s.regime == before.regime && s.junction == before.junction &&
+           s.in_ramp == before.in_ramp && s.out_ramp == before.out_ramp;
 }
 
 double Lookahead::first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const {
@@ -467,15 +465,14 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
 
 void Lookahead::replan(std::size_t first) {
     next_known_ = false;
-    first = std::min(first, ramp_change_);
-    ramp_change_ = static_cast<std::size_t>(-1);
+    first = std::min(first, take_ramp_change());
     // Under way, a failed change falls back on the accepted plan (at rest there is nothing to keep).
     const bool fallback = frozen_.moving && (snapshot_taken_ || (held_ && !hold_stop_placed()));
     if (held_ && frozen_.moving && !hold_stop_placed()) {
         if (!snapshot_taken_) take_snapshot();
         place_hold_stop();
         first = 0;
-        ramp_change_ = static_cast<std::size_t>(-1);
+        take_ramp_change();
     }
     snapshot_taken_ = false;
     if (first >= count_) {
@@ -531,8 +528,7 @@ void Lookahead::replan(std::size_t first) {
                 if (count_ >= 3) junction_caps(count_ - 3);
             }
             backward(count_ - 1);
-            from = std::min(count_ >= 2 ? count_ - 2 : 0, ramp_change_);
-            ramp_change_ = static_cast<std::size_t>(-1);
+            from = std::min(count_ >= 2 ? count_ - 2 : 0, take_ramp_change());
             // At rest, a plan restored from a hold brakes to a standstill and cannot start again
             // (machine 61, program 1689): nothing is under way to keep, so from rest again.
             if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
@@ -545,8 +541,7 @@ void Lookahead::replan(std::size_t first) {
         if (excess_ == 0.0 && seg(bad).ramps_capped && seg(bad).kind == Kind::corner && !seg(bad).junction.sparse) {
             seg(bad).ramps_capped = false;
             junction_caps(bad);
-            from = std::min({from, bad, ramp_change_});
-            ramp_change_ = static_cast<std::size_t>(-1);
+            from = std::min({from, bad, take_ramp_change()});
             continue;
         }
         // A block that ramped on from its start keeps the start's speed before its corner is
@@ -576,8 +571,7 @@ void Lookahead::replan(std::size_t first) {
                 if (k > 0) junction_caps(k - 1);
                 if (k + 1 < count_) junction_caps(k);
             }
-        from = std::min({from, bad, backward(bad), ramp_change_});
-        ramp_change_ = static_cast<std::size_t>(-1);
+        from = std::min({from, bad, backward(bad), take_ramp_change()});
     }
     // What bounded each junction the passes went over (for the report).
     for (std::size_t i = from; i + 1 < count_; ++i) {

@@ -106,18 +106,18 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     int n = 0;
     steps[n] = view(block.in, 0);
     // A ramp's box and jerk stage: the block's own, or those of the junction's regime it shares.
-    auto ramp = [&](double dv, double alpha, double t2, int up, int down) {
+    auto ramp = [&](double dv, double alpha, double t2) {
         const bool own = t2 < 0.0;
         return StepView{std::abs(dv) * (own ? block.alpha : alpha), own ? rules.t2 : t2, &block.u, dv > 0.0 ? 1.0 : -1.0, false,
-                        block.u_unit_box, dv > 0.0 ? up : down, false};
+                        block.u_unit_box, dv > 0.0 ? 1 : 2, false};
     };
     if (p != a) {
         speed[n] = a, leg[n] = 0;
-        steps[++n] = ramp(p - a, block.in_alpha, block.in_t2, 1, 2);
+        steps[++n] = ramp(p - a, block.in_alpha, block.in_t2);
     }
     if (b != p) {
         speed[n] = p, leg[n] = n == 0 ? 0 : 1;
-        steps[++n] = ramp(b - p, block.out_alpha, block.out_t2, 1, 2);
+        steps[++n] = ramp(b - p, block.out_alpha, block.out_t2);
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
     steps[++n] = view(block.out, 3);

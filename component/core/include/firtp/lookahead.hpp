@@ -44,6 +44,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace firtp {
@@ -90,6 +91,7 @@ private:
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
         bool sparse = false;  // the machine's own (sparse_)
+        bool operator==(const Regime&) const = default;
     };
 
     struct Segment {
@@ -379,6 +381,7 @@ private:
     // The lowest segment whose ramps' regime junction_caps() changed since the last replan (its
     // legs were planned for the old one); SIZE_MAX: none.
     std::size_t ramp_change_ = static_cast<std::size_t>(-1);
+    std::size_t take_ramp_change() { return std::exchange(ramp_change_, static_cast<std::size_t>(-1)); }
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
     double rate_ = 1.0;
