@@ -88,6 +88,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     when_.resize(segments_.size());
     enter_.resize(segments_.size());
     entry_memo_.resize(segments_.size());
+    plan_memo_.resize(segments_.size());
     reports_.resize(64);
 }
 
@@ -105,7 +106,10 @@ void Lookahead::reset(const AxisVector& position) {
 // ---- Regimes and steps -------------------------------------------------------------------------
 
 Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
-    Regime r = sparse_;
+    if (epsilon == regime_epsilon_) return regime_answer_;
+    regime_epsilon_ = epsilon;
+    Regime& r = regime_answer_;
+    r = sparse_;
     r.sparse = false;
     if (!(rules_.t2 > 0.0)) return r;
     r.t2 = 0.0;
@@ -338,7 +342,7 @@ void Lookahead::set_junction(std::size_t i) {
     if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
         double epsilon = s.tolerance;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
-        s.corner_cap = sampled_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - 1e-6));  // rounding: to spare
+        s.corner_cap = sampled_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - plan_margin));
         s.cap_bound = CornerBound::tolerance;
     }
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
@@ -683,6 +687,26 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         s.xp = s.x1 = 0.0;
     } else {
         Fitting fitting(*this, i);
+        // The same inputs as the last plan of this slot: the same plan (not under way: a hold
+        // there reads the accepted speeds).
+        const bool memo_ok = !(i == 0 && frozen_.moving);
+        PlanMemo& memo = plan_memo_[ring(i)];
+        decltype(PlanMemo::key) key;
+        int size = 0;
+        if (memo_ok) {
+            size = fitting.key(key.data());
+            const bool stop = exit_is_stop(i);
+            for (double x : {entry, pt, s.entry_max, s.exit_max, stop ? 0.0 : target(i + 1), stop ? 2.0 : seg(i + 1).brake ? 1.0 : 0.0,
+                             s.brake ? 1.0 : 0.0, s.one_speed_start ? 1.0 : 0.0})
+                key[size++] = x;
+            if (size == memo.size && std::equal(key.begin(), key.begin() + size, memo.key.begin())) {
+                s.a = memo.a, s.p = memo.p, s.b = memo.b;
+                s.x0 = memo.x0, s.xp = memo.xp, s.x1 = memo.x1;
+                s.unfit = memo.unfit, s.ramped_on = memo.ramped_on;
+                link_next_a(i);
+                return;
+            }
+        }
         auto fits = [&](std::size_t, double a, double p, double b) { return fitting(a, p, b); };
         auto probe = [&](double a, double p, double b) { return fitting.probe(a, p, b); };
         double a = entry, p = 0.0, b = 0.0;
@@ -738,7 +762,18 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         s.ramped_on = starting && p > a;
         s.a = a, s.p = p, s.b = b;
         s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;
+        if (memo_ok) {
+            std::copy(key.begin(), key.begin() + size, memo.key.begin());
+            memo.size = size;
+            memo.a = a, memo.p = p, memo.b = b, memo.x0 = s.x0, memo.xp = s.xp, memo.x1 = s.x1;
+            memo.unfit = s.unfit, memo.ramped_on = s.ramped_on;
+        }
     }
+    link_next_a(i);
+}
+
+void Lookahead::link_next_a(std::size_t i) {
+    const Segment& s = seg(i);
     if (i > 0) {
         Segment& prev = seg(i - 1);
         prev.next_a = s.a;

@@ -15,7 +15,6 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int max_check_attempts = 12;
 constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
 constexpr double crawl_fraction = 1e-3;
-constexpr double error_margin = 1e-6;  // of epsilon: what the samples round to may differ a little
 // check()'s *bad when the block under way cannot take the new plan (no corner to lower).
 constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
 
@@ -448,12 +447,12 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             const double period = parameters_.period;
             ApproachBounds bounds;
             if (!sharp && when_[i] - 32.0 * period >= begin)
-                bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - error_margin)};
+                bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - check_margin)};
             const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];
         }
-        const double epsilon = s.tolerance * (1.0 - error_margin);
+        const double epsilon = s.tolerance * (1.0 - check_margin);
         excess_ = s.predicted_error / epsilon;
         if (s.predicted_error > epsilon) {
             *bad = i;

@@ -41,9 +41,12 @@ void stages(const Kernel& k, double& a, double& b) {
 // appended at knots[n...] (returns the new n); those before it are summed into the state at `from`
 // (v, a, j). Both from the same knot times, so a knot that rounds onto `from` is counted exactly
 // once. Only the first `axes` entries of the vectors are computed.
+// (Axes > 0: that many axes, known to the compiler; 0: `axes` of them.)
+template <int Axes>
 std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>& knots, std::size_t n, const AxisVector& step,
-                      double start, const Kernel& k, double from, double to, int axes, AxisVector& v, AxisVector& a,
+                      double start, const Kernel& k, double from, double to, int runtime_axes, AxisVector& v, AxisVector& a,
                       AxisVector& j) {
+    const int axes = Axes > 0 ? Axes : runtime_axes;
     double ta = 0.0, tb = 0.0;
     stages(k, ta, tb);
     const bool one_stage = tb <= negligible_stage * ta;  // (a stage of 1e-17 s: jerks of 1e21 to cancel)
@@ -88,6 +91,7 @@ std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>
     return n;
 }
 
+template <int Axes>
 struct Checker {
     int axes;
     // Per axis and derivative (velocity, acceleration, jerk): limit * slack, +inf where there is no
@@ -95,7 +99,7 @@ struct Checker {
     double threshold[3][max_axes];
     LimitCheck result;
 
-    explicit Checker(const MachineLimits& limits) : axes(limits.axes) {
+    explicit Checker(const MachineLimits& limits) : axes(Axes > 0 ? Axes : limits.axes) {
         for (int i = 0; i < axes; ++i) {
             const double l[3] = {limits.axis[i].max_velocity, limits.axis[i].max_acceleration, limits.axis[i].max_jerk};
             for (int d = 0; d < 3; ++d) threshold[d][i] = l[d] > 0.0 ? l[d] * slack : HUGE_VAL;
@@ -105,7 +109,7 @@ struct Checker {
         if (std::abs(value) > threshold[derivative - 1][axis] && result.ok) result = {false, t, axis, derivative, value};
     }
     void state(double t, const AxisVector& v, const AxisVector& a) {
-        for (int i = 0; i < axes; ++i) {
+        for (int i = 0; i < (Axes > 0 ? Axes : axes); ++i) {
             over(v[i], t, i, 1);
             over(a[i], t, i, 2);
         }
@@ -120,8 +124,18 @@ LimitSweep::LimitSweep(std::size_t max_legs) : edges_(max_legs * 8 + 1), knots_(
 
 LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits,
                              double period) {
+    switch (limits.axes) {  // the common machines with their axes known to the compiler (unrolled)
+    case 3: return sweep<3>(legs, from, to, limits, period);
+    case 2: return sweep<2>(legs, from, to, limits, period);
+    case 4: return sweep<4>(legs, from, to, limits, period);
+    default: return sweep<0>(legs, from, to, limits, period);
+    }
+}
+
+template <int Axes>
+LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits, double period) {
     std::vector<Knot>& knots = knots_;
-    const int axes = limits.axes;  // the only entries computed and checked
+    const int axes = Axes > 0 ? Axes : limits.axes;  // the only entries computed and checked
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
     std::uint32_t e = 0;
@@ -131,16 +145,16 @@ LimitCheck LimitSweep::check(std::span<const TimedLeg> legs, double from, double
         AxisVector up, down;  // the rising edge steps by dv, the falling one by -dv
         for (int i = 0; i < axes; ++i) up[i] = leg.delta[i] / leg.tv, down[i] = -up[i];
         std::size_t before = n;
-        n = add_knots(edges_[e], e, knots, n, up, leg.rise, leg.rising, from, to, axes, v, a, j);
+        n = add_knots<Axes>(edges_[e], e, knots, n, up, leg.rise, leg.rising, from, to, axes, v, a, j);
         if (n > before) ++e;
         before = n;
-        n = add_knots(edges_[e], e, knots, n, down, leg.rise + leg.fall, leg.falling, from, to, axes, v, a, j);
+        n = add_knots<Axes>(edges_[e], e, knots, n, down, leg.rise + leg.fall, leg.falling, from, to, axes, v, a, j);
         if (n > before) ++e;
     }
     // The same comparisons of t as sorting the knots with their jumps would make: the same order,
     // ties included.
     std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n), [](const Knot& x, const Knot& y) { return x.t < y.t; });
-    Checker c(limits);
+    Checker<Axes> c(limits);
     c.state(from, v, a);
     double t = from;
     for (std::size_t k = 0; k <= n; ++k) {

@@ -79,6 +79,11 @@ public:
     double max_kernel_width() const { return max_width_; }
 
 private:
+    // Of a corner's epsilon: the exact check accepts errors up to (1 - check_margin) epsilon (what
+    // the samples round to may differ a little); corners are planned to (1 - plan_margin) epsilon,
+    // inside that by enough that the check's bound on the chords (closest_approach: the path's
+    // error plus the sag its acceleration allows) passes them without measuring every chord.
+    static constexpr double check_margin = 1e-6, plan_margin = 2e-6;
     enum class Kind : std::uint8_t { stop, corner, dense };
 
     // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
@@ -260,6 +265,7 @@ private:
     std::size_t refresh_end_flags_below(std::size_t i);  // segments i - 1, i - 2, ... while they change; the lowest changed (i: none)
     void forward(std::size_t from);
     void plan_segment(std::size_t i, double entry);
+    void link_next_a(std::size_t i);  // the segment before i: its next_a, and its rest after a stop
     double entry_for(std::size_t i) const;  // the forward entry speed of segment i
     double max_entry(std::size_t i, double exit_max) const;
     // What dense_probe needs of junction i that does not depend on the speeds (found once a search).
@@ -321,6 +327,10 @@ private:
     mutable std::array<CornerMemo, 32> corner_memo_{};
     double sampled_speed(double alpha, double t2, double s, double du, double epsilon) const;
 
+    // dense_regime()'s last answer: a program keeps its tolerance for many blocks.
+    mutable double regime_epsilon_ = std::numeric_limits<double>::quiet_NaN();
+    mutable Regime regime_answer_{};
+
     // max_entry()'s last search per ring slot and all it read (Fitting::key, feed_max, exit_max):
     // the backward pass asks again where nothing changed, to see that nothing did.
     struct EntryMemo {
@@ -329,6 +339,15 @@ private:
         double answer = 0.0;
     };
     mutable std::vector<EntryMemo> entry_memo_;
+    // plan_segment()'s last sparse plan per ring slot and all it read (Fitting::key and the
+    // speeds and flags below): forward() plans blocks again whose end-of-path flags alone changed.
+    struct PlanMemo {
+        std::array<double, 8 * max_axes + 32> key{};
+        int size = -1;
+        double a = 0.0, p = 0.0, b = 0.0, x0 = 0.0, xp = 0.0, x1 = 0.0;
+        bool unfit = false, ramped_on = false;
+    };
+    std::vector<PlanMemo> plan_memo_;
 
     // Motion.
     double frozen_centre() const;           // seconds from the timeline's now

@@ -83,6 +83,8 @@ public:
     };
 
 private:
+    template <int Axes>
+    LimitCheck sweep(std::span<const TimedLeg> legs, double from, double to, const MachineLimits& limits, double period);
     std::vector<Edge> edges_;
     std::vector<Knot> knots_;
 };
