@@ -1,0 +1,96 @@
+// The planning cost of one block, without this machine's noise: BM_PlanBlock's stream (random
+// corners, 64 blocks of look-ahead, the built-in machine) planned --repeat times over. Planning is
+// deterministic, so add k does the same work in every run; other jobs, interrupts and a VM's stolen
+// time only ever add to it. Each add's least thread-CPU time over the runs is its own cost; this
+// prints their mean, p99 and max (the worst add of the code), and the single-run figures beside.
+//
+//   firtp_worst_add [--blocks 20000] [--repeat 7] [--seed 2] [--varying-feed]
+//
+// Memory: one double per add (a benchmark, not the planner).
+#include "bench_stats.hpp"
+#include "random_corners.hpp"
+
+#include <firtp/planner.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+using namespace firtp;
+
+namespace {
+
+struct Figures {
+    double mean = 0.0, p99 = 0.0, max = 0.0;
+    std::size_t worst = 0;  // the add with the max (0-based)
+};
+
+Figures figures(const std::vector<double>& us) {
+    Figures f;
+    std::vector<double> sorted = us;
+    std::sort(sorted.begin(), sorted.end());
+    for (double x : us) f.mean += x;
+    f.mean /= static_cast<double>(us.size());
+    f.p99 = sorted[sorted.size() * 99 / 100];
+    f.max = sorted.back();
+    f.worst = static_cast<std::size_t>(std::max_element(us.begin(), us.end()) - us.begin());
+    return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    long blocks = 20000;
+    int repeat = 7;
+    std::uint64_t seed = 2;
+    bool varying = false;
+    for (int i = 1; i < argc; ++i) {
+        const bool has_value = i + 1 < argc;
+        if (!std::strcmp(argv[i], "--blocks") && has_value) blocks = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--repeat") && has_value) repeat = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--seed") && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (!std::strcmp(argv[i], "--varying-feed")) varying = true;
+        else {
+            std::fprintf(stderr, "usage: %s [--blocks N] [--repeat K] [--seed S] [--varying-feed]\n", argv[0]);
+            return 2;
+        }
+    }
+    if (blocks < 100 || repeat < 1) {
+        std::fprintf(stderr, "firtp_worst_add: --blocks >= 100 and --repeat >= 1\n");
+        return 2;
+    }
+    PlannerParameters parameters;  // firtp_bench's "limits" machine
+    parameters.limits.axes = 3;
+    for (int a = 0; a < 3; ++a) parameters.limits.axis[a] = {300.0, 5000.0, 1e5};
+    parameters.queue_capacity = 256;
+
+    const auto n = static_cast<std::size_t>(blocks);
+    std::vector<double> least(n, HUGE_VAL), first(n, 0.0);
+    for (int run = 0; run < repeat; ++run) {
+        Planner planner(parameters, AxisVector::Zero());
+        bench::RandomCorners corners(3, varying, seed);
+        AxisState out;
+        for (std::size_t k = 0; k < n; ++k) {
+            while (planner.depth() >= 64 || planner.free() == 0) planner.tick(out);
+            const Block block = corners.next();
+            const std::int64_t c0 = bench::thread_cpu_ns();
+            const Result result = planner.add(block);
+            const std::int64_t c1 = bench::thread_cpu_ns();
+            if (result != Result::ok) {
+                std::fprintf(stderr, "firtp_worst_add: block %zu not planned\n", k + 1);
+                return 1;
+            }
+            const double us = static_cast<double>(c1 - c0) * 1e-3;
+            least[k] = std::min(least[k], us);
+            if (run == 0) first[k] = us;
+        }
+    }
+    const Figures once = figures(first), own = figures(least);
+    std::printf("%ld adds (random corners, %s feeds, seed %llu), thread CPU clock, us\n", blocks, varying ? "100-300 mm/s" : "equal",
+                static_cast<unsigned long long>(seed));
+    std::printf("  one run:             mean %.2f  p99 %.1f  max %.1f (add %zu)\n", once.mean, once.p99, once.max, once.worst + 1);
+    std::printf("  least of %d runs:     mean %.2f  p99 %.1f  max %.1f (add %zu)\n", repeat, own.mean, own.p99, own.max, own.worst + 1);
+    return 0;
+}
