@@ -155,9 +155,15 @@ Lookahead::Step Lookahead::junction_step(std::size_t i) const {
 }
 
 StepShape Lookahead::sized_shape(std::size_t i, double v, const AxisVector& direction) const {
+    StepShape shape{0.0, direction, 0.0, seg(i).u_box, true};
+    resize_sized(i, v, shape);
+    return shape;
+}
+
+void Lookahead::resize_sized(std::size_t i, double v, StepShape& shape) const {
     const Segment& s = seg(i);
     const Kernel k = sized_kernel(v, s.alpha, s.u_jerk);
-    return {k.a, direction, k.b, s.u_box, true};
+    shape.box = k.a, shape.t2 = k.b;
 }
 
 Lookahead::Step Lookahead::sized_step(std::size_t i, double dv) const {
@@ -434,7 +440,7 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
 const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     if (entry_scaled_) in_.in.box = a * in_scale_;
     else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
-    if (out_sized_) in_.out = la_.exit_shape(i_, b);
+    if (out_sized_) la_.resize_sized(i_, b, in_.out);  // (its direction and unit box stay)
     else in_.out.box = b * out_scale_;
     const double t2 = la_.rules_.t2;
     in_.in_reserve = corner_in_ && in_.in.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.in.box) : 0.0;

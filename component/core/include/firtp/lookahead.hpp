@@ -231,6 +231,7 @@ private:
     // (Not the stop a hold places: place_hold_stop finds it with the machine's shared jerk stage.)
     bool sized(std::size_t i) const { return sized_ && seg(i).regime.sparse && !seg(i).hold_split && !seg(i).hold_end; }
     StepShape sized_shape(std::size_t i, double v, const AxisVector& direction) const;
+    void resize_sized(std::size_t i, double v, StepShape& shape) const;  // sized_shape()'s box and t2 at speed v
     Step sized_step(std::size_t i, double dv) const;  // dv along u
     Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop)
     Step stop_step(std::size_t i) const;             // segment i's stop at its end
