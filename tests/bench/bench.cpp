@@ -2,9 +2,8 @@
 // Counters: worst_ns is the slowest single call seen (a shared machine adds noise to it; ticks:
 // every 32nd call is timed for it).
 //
-// Machines: "limits" is the built-in machine (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3 per axis), every
-// move smoothed at its limits; "chain" is the paper's fixed chain (T 148, 89, 31, 11 ms, as many
-// stages as asked).
+// Machines: bench::machine (random_corners.hpp), "limits" the built-in machine's axes smoothed at
+// their limits, otherwise the paper's fixed chain with as many stages as asked.
 #include "random_corners.hpp"
 
 #include <firtp/planner.hpp>
@@ -14,24 +13,10 @@
 #include <chrono>
 
 using namespace firtp;
+using firtp::bench::machine;
 using firtp::bench::RandomCorners;
 
 namespace {
-
-PlannerParameters machine(bool limits, int axes, int stages) {
-    PlannerParameters p;
-    p.limits.axes = axes;
-    for (int a = 0; a < axes; ++a) p.limits.axis[a] = {300.0, 5000.0, 1e5};
-    p.queue_capacity = 256;
-    if (!limits) {
-        p.fixed_chain = true;
-        p.limits = MachineLimits{};
-        p.filters.stages = stages;
-        const double times[] = {0.148, 0.089, 0.031, 0.011};
-        for (int i = 0; i < stages; ++i) p.filters.T[i] = times[i];
-    }
-    return p;
-}
 
 // `count` of firtp::bench::RandomCorners (random_corners.hpp).
 std::vector<Block> random_blocks(int axes, std::size_t count, bool varying_feed, std::uint64_t seed) {

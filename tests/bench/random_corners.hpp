@@ -1,14 +1,33 @@
-// The random corners of firtp_bench (BM_PlanBlock, BM_Tick) and firtp_plan_stream --generate
-// corners: each block 2-40 mm from the last in a random direction of the first `axes` axes, at
-// 100-300 mm/s (or 250 throughout), 0.05 mm tolerance.
+// The random corners of firtp_bench (BM_PlanBlock, BM_Tick), firtp_worst_add and
+// firtp_plan_stream --generate corners: each block 2-40 mm from the last in a random direction of
+// the first `axes` axes, at 100-300 mm/s (or 250 throughout), 0.05 mm tolerance. And the machines
+// firtp_bench plans them on.
 #pragma once
 
+#include <firtp/parameters.hpp>
 #include <firtp/types.hpp>
 
 #include <cstdint>
 #include <random>
 
 namespace firtp::bench {
+
+// "limits": the built-in machine's axes (300 mm/s, 5000 mm/s^2, 1e5 mm/s^3), every move smoothed
+// at its limits; otherwise the paper's fixed chain (T 148, 89, 31, 11 ms, `stages` of them).
+inline PlannerParameters machine(bool limits, int axes, int stages) {
+    PlannerParameters p;
+    p.limits.axes = axes;
+    for (int a = 0; a < axes; ++a) p.limits.axis[a] = {300.0, 5000.0, 1e5};
+    p.queue_capacity = 256;
+    if (!limits) {
+        p.fixed_chain = true;
+        p.limits = MachineLimits{};
+        p.filters.stages = stages;
+        const double times[] = {0.148, 0.089, 0.031, 0.011};
+        for (int i = 0; i < stages; ++i) p.filters.T[i] = times[i];
+    }
+    return p;
+}
 
 class RandomCorners {
 public:

@@ -61,10 +61,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "firtp_worst_add: --blocks >= 100 and --repeat >= 1\n");
         return 2;
     }
-    PlannerParameters parameters;  // firtp_bench's "limits" machine
-    parameters.limits.axes = 3;
-    for (int a = 0; a < 3; ++a) parameters.limits.axis[a] = {300.0, 5000.0, 1e5};
-    parameters.queue_capacity = 256;
+    const PlannerParameters parameters = bench::machine(true, 3, 2);  // BM_PlanBlock's limits:1
 
     const auto n = static_cast<std::size_t>(blocks);
     std::vector<double> least(n, HUGE_VAL), first(n, 0.0);

@@ -448,10 +448,11 @@ const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     return in_;
 }
 
-int Lookahead::Fitting::key(double* out) const {
+Lookahead::MemoKey Lookahead::Fitting::key() const {
     const int axes = la_.limits_.axes;
-    int n = 0;
-    auto put = [&](double v) { out[n++] = v; };
+    MemoKey key;
+    key.size = 0;
+    auto put = [&](double v) { key.put(v); };
     auto put_vector = [&](const AxisVector& v) {
         for (int k = 0; k < axes; ++k) put(v[k]);
     };
@@ -469,7 +470,7 @@ int Lookahead::Fitting::key(double* out) const {
         put(prev.b), put_vector(prev.u), put(prev.junction.t2), put_vector(prev.junction.cap);
     }
     put(out_scale_), put(in_.out.t2), put(in_.out.unit_box), put_vector(in_.out.direction);
-    return n;
+    return key;
 }
 
 ProfileInput Lookahead::profile_input(std::size_t i, double a, double b) const {
@@ -571,10 +572,9 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
     }
     Fitting fits(*this, i);
     EntryMemo& memo = entry_memo_[ring(i)];
-    decltype(EntryMemo::key) key;
-    int size = fits.key(key.data());
-    key[size++] = s.feed_max, key[size++] = exit_max;
-    if (size == memo.size && std::equal(key.begin(), key.begin() + size, memo.key.begin())) return memo.answer;
+    MemoKey key = fits.key();
+    key.put(s.feed_max), key.put(exit_max);
+    if (memo.key.same(key)) return memo.answer;
     // Most short blocks enter at most as fast as they may leave (tort: 98 % of the searches).
     const double answer = highest(
         [&](double a) {
@@ -582,8 +582,8 @@ double Lookahead::max_entry(std::size_t i, double exit_max) const {
             return fits.probe(a, std::max(a, b), b);
         },
         0.0, s.feed_max, exit_max);
-    std::copy(key.begin(), key.begin() + size, memo.key.begin());
-    memo.size = size, memo.answer = answer;
+    memo.key.keep(key);
+    memo.answer = answer;
     return answer;
 }
 
@@ -697,15 +697,13 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         // there reads the accepted speeds).
         const bool memo_ok = !(i == 0 && frozen_.moving);
         PlanMemo& memo = plan_memo_[ring(i)];
-        decltype(PlanMemo::key) key;
-        int size = 0;
+        MemoKey key = memo_ok ? fitting.key() : MemoKey{};
         if (memo_ok) {
-            size = fitting.key(key.data());
             const bool stop = exit_is_stop(i);
             for (double x : {entry, pt, s.entry_max, s.exit_max, stop ? 0.0 : target(i + 1), stop ? 2.0 : seg(i + 1).brake ? 1.0 : 0.0,
                              s.brake ? 1.0 : 0.0, s.one_speed_start ? 1.0 : 0.0})
-                key[size++] = x;
-            if (size == memo.size && std::equal(key.begin(), key.begin() + size, memo.key.begin())) {
+                key.put(x);
+            if (memo.key.same(key)) {
                 s.a = memo.a, s.p = memo.p, s.b = memo.b;
                 s.x0 = memo.x0, s.xp = memo.xp, s.x1 = memo.x1;
                 s.unfit = memo.unfit, s.ramped_on = memo.ramped_on;
@@ -769,8 +767,7 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
         s.a = a, s.p = p, s.b = b;
         s.x0 = legs.x0, s.xp = legs.xp, s.x1 = legs.x1;
         if (memo_ok) {
-            std::copy(key.begin(), key.begin() + size, memo.key.begin());
-            memo.size = size;
+            memo.key.keep(key);
             memo.a = a, memo.p = p, memo.b = b, memo.x0 = s.x0, memo.xp = s.xp, memo.x1 = s.x1;
             memo.unfit = s.unfit, memo.ramped_on = s.ramped_on;
         }

@@ -290,6 +290,19 @@ private:
     double dense_exit_max(std::size_t i, double next_entry_max) const;
     ProfileInput profile_input(std::size_t i, double a, double b) const;
     bool fits(std::size_t i, double a, double p, double b) const;
+    // What a memoized step read (Fitting::key and the step's own inputs), compared whole.
+    struct MemoKey {
+        std::array<double, 8 * max_axes + 32> values;  // (only the first `size` are ever read)
+        int size = -1;                                  // -1: nothing kept
+        void put(double x) { values[static_cast<std::size_t>(size++)] = x; }
+        bool same(const MemoKey& other) const {
+            return size == other.size && std::equal(values.begin(), values.begin() + size, other.values.begin());
+        }
+        void keep(const MemoKey& other) {
+            std::copy(other.values.begin(), other.values.begin() + other.size, values.begin());
+            size = other.size;
+        }
+    };
     // profile_input() and fits() of segment i at many speeds (a search): the parts that do not
     // depend on the speeds are found once, the rest as profile_input() finds them.
     class Fitting {
@@ -304,7 +317,7 @@ private:
             return {legs.fits, legs.margin};
         }
         // Everything input() reads but the speeds, as numbers (how many): equal keys, equal inputs.
-        int key(double* out) const;
+        MemoKey key() const;
 
     private:
         const Lookahead& la_;
@@ -335,16 +348,14 @@ private:
     // max_entry()'s last search per ring slot and all it read (Fitting::key, feed_max, exit_max):
     // the backward pass asks again where nothing changed, to see that nothing did.
     struct EntryMemo {
-        std::array<double, 8 * max_axes + 16> key{};
-        int size = -1;
+        MemoKey key;
         double answer = 0.0;
     };
     mutable std::vector<EntryMemo> entry_memo_;
     // plan_segment()'s last sparse plan per ring slot and all it read (Fitting::key and the
     // speeds and flags below): forward() plans blocks again whose end-of-path flags alone changed.
     struct PlanMemo {
-        std::array<double, 8 * max_axes + 32> key{};
-        int size = -1;
+        MemoKey key;
         double a = 0.0, p = 0.0, b = 0.0, x0 = 0.0, xp = 0.0, x1 = 0.0;
         bool unfit = false, ramped_on = false;
     };
