@@ -233,6 +233,8 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 //   period (difference_noise).
 // - 34/1723 (and 33/1222, 37/207, 38/858, 36/1423): held, the check also summed the legs after
 //   the hold's stop (the resume's start), which cancelled the braking: 2x an axis' acceleration.
+// - 32/295: a block braking to rest at its end planned its cruise at the lowest speed passing,
+//   6e-15 mm/s: the hold never arrived and the abort after it never came to rest.
 // - 33/962, 38/1102: the start after a hold's stop began inside the wider kernel of the step before the
 //   stop; the check refused every such start and an unchecked plan started at speed 0 for ever.
 // - 35/350: a hold braked a dense junction to 5e-6 mm/s and the next (dense) block kept that crawl.
@@ -246,7 +248,7 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 TEST(RandomMachines, HoldResumeRegressions) {
     const std::pair<std::uint64_t, int> programs[] = {{34, 1723}, {33, 1222}, {37, 207}, {38, 858}, {36, 1423},
                                                       {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363},
-                                                      {41, 404}, {35, 1070}, {47, 393}, {56, 634}, {61, 1689}};
+                                                      {41, 404}, {35, 1070}, {47, 393}, {56, 634}, {61, 1689}, {32, 295}};
     for (const auto& [seed, index] : programs) {
         SCOPED_TRACE("seed " + std::to_string(seed) + ", program " + std::to_string(index));
         check_rate_changes(seed, 0, true, true, index);

@@ -753,6 +753,8 @@ void Lookahead::plan_segment(std::size_t i, double entry) {
                 else b = lowest([&](double v) { return probe(a, a, v); }, bt, std::min(a, s.exit_max));
                 const double top = std::max(a, b);
                 if (pt >= top) p = highest([&](double v) { return probe(a, v, b); }, top, pt);
+                // Braked to rest at its end: no crawl before it (the lowest p passing was 6e-15).
+                else if (s.brake && !(b > 0.0)) p = top;
                 else p = fits(i, a, pt, b) ? pt : lowest([&](double v) { return probe(a, v, b); }, pt, top);
                 p = std::max(p, std::min(a, b));  // no standstill inside the block
             }
@@ -915,6 +917,7 @@ void Lookahead::place_hold_stop() {
         ProfileInput in = profile_input(i, a, a);
         in.out = {a * s.alpha, -s.u, s.regime.t2};
         in.out_reserve = 0.0;
+        in.out_alpha = 0.0, in.out_t2 = -1.0;  // a split's stop shares no corner's regime (set_junction)
         in.length = 0.0;
         const double reach = a * profile_legs(rules_, in, a, a, a).x0;
         const double start = i == 0 ? frozen_.consumed : 0.0;
