@@ -247,16 +247,30 @@ bool Lookahead::smooth(std::size_t i) const {
 }
 
 // A short block planned sparse hosts the steps at both its ends in its one leg, about T2 apart
-// (spacing rules): it keeps the lower of its corners' sparse caps, or ramps up from them and down
-// again (a triangle at the acceleration along it, plus T2), whichever is faster on average.
+// (spacing rules): it keeps the lower of its corners' sparse caps, or ramps from its entry
+// corner's cap to its exit corner's (from or to rest at a stop) through a peak it has room for (a
+// trapezoid at the acceleration along it, plus T2), whichever is faster on average. (Ramping only
+// from rest to rest left a block between a fast and a slow corner to be classified dense and
+// crawl: seed 7, program 199, +14.5 % with every tolerance a quarter larger.)
 double Lookahead::sparse_estimate(std::size_t i) const {
     const Segment& s = seg(i);
     const double length = seg_length(i);
+    const bool entry = i > 0 && seg(i - 1).kind != Kind::stop, exit = i + 1 < count_ && s.kind != Kind::stop;
+    const double in = entry ? std::min(seg(i - 1).tight_cap, s.feed_max) : 0.0;
+    const double out = exit ? std::min(s.tight_cap, s.feed_max) : 0.0;
     double corners = s.feed_max;
     if (rules_.t2 > 0.0) corners = std::min(corners, length / rules_.t2);
-    if (i > 0 && seg(i - 1).kind != Kind::stop) corners = std::min(corners, seg(i - 1).sparse_cap);
-    if (i + 1 < count_ && s.kind != Kind::stop) corners = std::min(corners, s.sparse_cap);
-    const double ramps = length / (2.0 * std::sqrt(length * s.alpha) + rules_.t2);
+    if (entry) corners = std::min(corners, in);
+    if (exit) corners = std::min(corners, out);
+    const double alpha = box(s.u, sparse_);  // 1 / the acceleration along u
+    if (!(alpha > 0.0)) return std::max(corners, s.feed_max);
+    // v^2 changes by 2 L / alpha at most over the block: the higher end comes down to what it allows.
+    const double reach = 2.0 * length / alpha;
+    const double v0 = std::min(in, std::sqrt(out * out + reach)), v1 = std::min(out, std::sqrt(v0 * v0 + reach));
+    const double peak = std::min(s.feed_max, std::sqrt(0.5 * (reach + v0 * v0 + v1 * v1)));
+    const double ramping = (2.0 * peak - v0 - v1) * alpha;
+    const double cruise = std::max(0.0, length - 0.5 * alpha * (2.0 * peak * peak - v0 * v0 - v1 * v1)) / peak;
+    const double ramps = length / (ramping + cruise + rules_.t2);
     return std::max(corners, std::min(ramps, s.feed_max));
 }
 
@@ -345,11 +359,20 @@ void Lookahead::set_junction(std::size_t i) {
     s.turn_alpha = box(s.turn.du, s.junction);
     s.corner_cap = infinity;
     s.cap_bound = CornerBound::feed;
+    bool tight_corner = false;
     if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
         double epsilon = s.tolerance;
         if (parameters_.tolerance_meaning == ToleranceMeaning::contour) epsilon /= std::cos(0.5 * s.turn.beta);
         s.corner_cap = sampled_speed(s.turn_alpha, s.junction.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - plan_margin));
         s.cap_bound = CornerBound::tolerance;
+        // Between sparse blocks the corner may take its tolerance's regime (a tight tolerance on a
+        // machine with a long T2), the ramps beside it sharing it, where that pays (tight_pays).
+        if (s.junction.sparse && !s.dense && !n.dense && s.corner_cap < std::max(s.feed_max, n.feed_max)) {
+            const Regime tight = dense_regime(s.tolerance);
+            const double alpha = box(s.turn.du, tight);
+            const double cap = sampled_speed(alpha, tight.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - plan_margin));
+            if (tight_pays(i, tight, cap, s.corner_cap)) s.junction = tight, s.turn_alpha = alpha, s.corner_cap = cap, tight_corner = true;
+        }
     }
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
         for (std::size_t k : {i, i + 1})
@@ -368,13 +391,54 @@ void Lookahead::set_junction(std::size_t i) {
     // their boxes up to J T2 (a box alone at that height keeps the jerk at J; where an axis swings
     // the other way within T2 the exact check finds it, and they keep the run's caps: replan).
     if (s.kind == Kind::corner && !s.junction.sparse) {
-        Regime ramp = s.junction;
-        for (int a = 0; a < limits_.axes && s.ramps_capped; ++a)
-            if (std::isfinite(ramp.cap[a]) && limits_.axis[a].max_jerk > 0.0)
-                ramp.cap[a] = std::min(limits_.axis[a].max_acceleration, limits_.axis[a].max_jerk * ramp.t2);
+        // (A tight corner's ramps keep its own caps: at J T2 they swung past the jerk limit and the
+        // checks lowered the corners, firtp_bench's random corners 19 % slower.)
+        const Regime ramp = s.ramps_capped && !tight_corner ? ramps_sharing(s.junction) : s.junction;
         if (!s.dense) s.out_ramp = ramp;
         if (!n.dense) seg(i + 1).in_ramp = ramp;
     }
+}
+
+// Ramps sharing a corner's regime: boxes up to J T2 (set_junction).
+Lookahead::Regime Lookahead::ramps_sharing(const Regime& corner) const {
+    Regime ramp = corner;
+    for (int a = 0; a < limits_.axes; ++a)
+        if (std::isfinite(ramp.cap[a]) && limits_.axis[a].max_jerk > 0.0)
+            ramp.cap[a] = std::min(limits_.axis[a].max_acceleration, limits_.axis[a].max_jerk * ramp.t2);
+    return ramp;
+}
+
+// What passing corner i at speed v in `regime` costs against the speeds on both sides, by
+// estimate: each side's ramp between v and its feed F (or the peak half its block allows) at the
+// acceleration a along it (its caps: the corner's own for the tolerance's regime, the machine's)
+// loses (F - v)^2 / (2 a F); the corner's step and a jerk stage each side of it run at v.
+double Lookahead::ramps_loss(std::size_t i, const Regime& regime, double v) const {
+    double loss = 0.0, top = 0.0;
+    for (std::size_t k : {i, i + 1}) {
+        const double alpha = box(seg(k).u, regime);
+        const double f = std::min(seg(k).feed_max, std::sqrt(v * v + seg_length(k) / alpha));
+        if (v < f) loss += (f - v) * (f - v) * alpha / (2.0 * f);
+        top += 0.5 * f;
+    }
+    if (v < top) loss += (1.0 - v / top) * (v * box(seg(i).turn.du, regime) + 2.0 * regime.t2);
+    return loss;
+}
+
+// A corner between sparse blocks takes its tolerance's regime (cap `tight` there, `machine` in
+// the machine's) where that costs less time by estimate. A faster corner alone does not pay: on a
+// 90 degree corner between 30 mm blocks at 200 mm/s (0.002 mm) the tolerance's regime passed at
+// 1.33 mm/s instead of 0.23 and took 0.652 s instead of 0.480, its ramps at 780 mm/s^2.
+bool Lookahead::tight_pays(std::size_t i, const Regime& tight, double cap, double machine) const {
+    return cap > machine && ramps_loss(i, tight, cap) < ramps_loss(i, sparse_, machine);
+}
+
+Lookahead::Regime Lookahead::shared_ramp(std::size_t i, const Regime& ramp) const {
+    const Segment& s = seg(i);
+    if (s.in_ramp.t2 < 0.0 || s.out_ramp.t2 < 0.0) return ramp;
+    Regime r = ramp;
+    for (int a = 0; a < limits_.axes; ++a)
+        if (std::isfinite(r.cap[a]) && limits_.axis[a].max_jerk > 0.0) r.cap[a] = std::min(r.cap[a], 0.5 * limits_.axis[a].max_jerk * r.t2);
+    return r;
 }
 
 void Lookahead::set_turn(Segment& s, const AxisVector& next_u) const {
@@ -391,11 +455,18 @@ void Lookahead::link(std::size_t i) {
     s.kind = stops_whatever_follows(s) || seg(i + 1).dwell > 0.0
                  ? Kind::stop
                  : Kind::corner;
-    s.sparse_cap = 0.0;
+    s.sparse_cap = s.tight_cap = 0.0;
     if (s.kind != Kind::stop) {
-        s.sparse_cap = infinity;
-        if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance))
-            s.sparse_cap = corner_speed(s.turn.alpha, rules_.t2, s.turn.s, s.tolerance);
+        s.sparse_cap = s.tight_cap = infinity;
+        if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
+            s.sparse_cap = s.tight_cap = corner_speed(s.turn.alpha, rules_.t2, s.turn.s, s.tolerance);
+            const Segment& n = seg(i + 1);
+            if ((s.short_block || n.short_block) && s.sparse_cap < std::max(s.feed_max, n.feed_max)) {  // (sparse_estimate's)
+                const Regime tight = dense_regime(s.tolerance);
+                const double cap = corner_speed(box(s.turn.du, tight), tight.t2, s.turn.s, s.tolerance);
+                if (tight_pays(i, tight, cap, s.sparse_cap)) s.tight_cap = cap;
+            }
+        }
     }
     // Whether the blocks on either side are dense depends on this junction: they and the
     // junctions next to them are decided again.
@@ -411,8 +482,8 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     const Segment& s = la_.seg(i);
     in_.length = la_.seg_length(i);
     in_.alpha = s.alpha;
-    if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, s.in_ramp);
-    if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, s.out_ramp);
+    if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, la_.shared_ramp(i, s.in_ramp));
+    if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, la_.shared_ramp(i, s.out_ramp));
     in_.u = s.u;
     in_.u_unit_box = s.u_box;
     const bool moving = i == 0 && la_.frozen_.moving;

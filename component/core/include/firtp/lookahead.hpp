@@ -91,7 +91,9 @@ private:
     // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)): the run's accelerations may then swing
     // from -h to +h within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
     // h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next to a corner in a run's regime share
-    // it (Segment::in_ramp); a sparse block's start and stop are sized to themselves (sized()).
+    // it (Segment::in_ramp), and so do a corner's between sparse blocks where it takes its
+    // tolerance's regime (tight_pays); a sparse block's start and stop are sized to themselves
+    // (sized()).
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
@@ -138,6 +140,7 @@ private:
         Regime junction;           // the junction step's smoothing
         double turn_alpha = 0.0;   // its T1 per unit of corner speed, in that regime
         double sparse_cap = 0.0;   // closed-form corner speed in the sparse regime (decides smoothness)
+        double tight_cap = 0.0;    // ... or in its tolerance's regime where faster (as set_junction may pass it)
         double corner_cap = 0.0;   // closed-form speed limit of the corner (one speed both sides)
         CornerBound cap_bound = CornerBound::feed;
         double learned_cap = 0.0;  // lowered where the exact check failed (+inf: none)
@@ -222,8 +225,14 @@ private:
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
-    const Regime& in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : seg(i).in_ramp; }
-    const Regime& out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : seg(i).out_ramp; }
+    Regime in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : shared_ramp(i, seg(i).in_ramp); }
+    Regime out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : shared_ramp(i, seg(i).out_ramp); }
+    // A ramp sharing a corner's regime; where the block shares the corners at both its ends, each
+    // ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
+    Regime shared_ramp(std::size_t i, const Regime& ramp) const;
+    Regime ramps_sharing(const Regime& corner) const;  // boxes up to J T2
+    double ramps_loss(std::size_t i, const Regime& regime, double v) const;  // corner i at v: time lost, s
+    bool tight_pays(std::size_t i, const Regime& tight, double cap, double machine) const;
     Step in_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, in_ramp_regime(i)); }   // a -> p
     Step out_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, out_ramp_regime(i)); }  // p -> b
     // The start and the stop of a block in the machine's regime are sized to themselves
