@@ -393,14 +393,13 @@ void Lookahead::set_junction(std::size_t i) {
     if (s.kind == Kind::corner && !s.junction.sparse) {
         // (A tight corner's ramps keep its own caps: at J T2 they swung past the jerk limit and the
         // checks lowered the corners, firtp_bench's random corners 19 % slower.)
-        const Regime ramp = s.ramps_capped && !tight_corner ? ramps_sharing(s.junction) : s.junction;
+        const Regime ramp = s.ramps_capped && !tight_corner ? ramp_sharing(s.junction) : s.junction;
         if (!s.dense) s.out_ramp = ramp;
         if (!n.dense) seg(i + 1).in_ramp = ramp;
     }
 }
 
-// Ramps sharing a corner's regime: boxes up to J T2 (set_junction).
-Lookahead::Regime Lookahead::ramps_sharing(const Regime& corner) const {
+Lookahead::Regime Lookahead::ramp_sharing(const Regime& corner) const {
     Regime ramp = corner;
     for (int a = 0; a < limits_.axes; ++a)
         if (std::isfinite(ramp.cap[a]) && limits_.axis[a].max_jerk > 0.0)
@@ -432,7 +431,7 @@ bool Lookahead::tight_pays(std::size_t i, const Regime& tight, double cap, doubl
     return cap > machine && ramps_loss(i, tight, cap) < ramps_loss(i, sparse_, machine);
 }
 
-Lookahead::Regime Lookahead::shared_ramp(std::size_t i, const Regime& ramp) const {
+Lookahead::Regime Lookahead::ramp_on_block(std::size_t i, const Regime& ramp) const {
     const Segment& s = seg(i);
     if (s.in_ramp.t2 < 0.0 || s.out_ramp.t2 < 0.0) return ramp;
     Regime r = ramp;
@@ -482,8 +481,8 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     const Segment& s = la_.seg(i);
     in_.length = la_.seg_length(i);
     in_.alpha = s.alpha;
-    if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, la_.shared_ramp(i, s.in_ramp));
-    if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, la_.shared_ramp(i, s.out_ramp));
+    if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, la_.in_ramp_regime(i));
+    if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, la_.out_ramp_regime(i));
     in_.u = s.u;
     in_.u_unit_box = s.u_box;
     const bool moving = i == 0 && la_.frozen_.moving;

@@ -225,12 +225,12 @@ private:
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
-    Regime in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : shared_ramp(i, seg(i).in_ramp); }
-    Regime out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : shared_ramp(i, seg(i).out_ramp); }
-    // A ramp sharing a corner's regime; where the block shares the corners at both its ends, each
-    // ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
-    Regime shared_ramp(std::size_t i, const Regime& ramp) const;
-    Regime ramps_sharing(const Regime& corner) const;  // boxes up to J T2
+    Regime in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : ramp_on_block(i, seg(i).in_ramp); }
+    Regime out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : ramp_on_block(i, seg(i).out_ramp); }
+    // A ramp on block i sharing a corner's regime; where the block shares the corners at both its
+    // ends, each ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
+    Regime ramp_on_block(std::size_t i, const Regime& ramp) const;
+    Regime ramp_sharing(const Regime& corner) const;  // a ramp sharing the corner's jerk stage: boxes up to J T2 (set_junction)
     double ramps_loss(std::size_t i, const Regime& regime, double v) const;  // corner i at v: time lost, s
     bool tight_pays(std::size_t i, const Regime& tight, double cap, double machine) const;
     Step in_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, in_ramp_regime(i)); }   // a -> p
