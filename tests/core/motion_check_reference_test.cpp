@@ -1,5 +1,6 @@
 // The closed-form checks give, bit for bit, what their first, plainer forms gave (main at e606b27,
-// with 5c02b7e's knots taken together at one time and a negligible second stage as one stage): the
+// with 5c02b7e's knots taken together at one time, a negligible second stage as one stage, and
+// since 2026-12-02 a junction's two edges as one): the
 // limit sweep sorted whole knots over all nine axes, and the sums visited every leg within reach. Their faster forms (docs/BENCHMARKS.md, "Planning cost") must not change a single plan,
 // so each is held here to that reference on random legs made to hit the awkward cases: knots at
 // the same time (a leg's fall is the next one's rise), one-stage and sharp kernels, motion at and
@@ -67,19 +68,33 @@ LimitCheck ref_check(std::span<const TimedLeg> legs, double from, double to, con
     std::vector<RefKnot> knots(legs.size() * 8);
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
+    // Since 2026-12-02 a leg's falling edge and the next leg's rising edge on the same kernel at
+    // the same time to 1e-12 s (a junction's step) are one edge at the rise, of the two
+    // velocities' difference.
+    const TimedLeg* previous = nullptr;  // the leg whose falling edge is not added yet
+    auto add_fall = [&](const TimedLeg& leg) {
+        n = ref_add_knots(knots, n, AxisVector(-(leg.delta / leg.tv)), leg.rise + leg.fall, leg.falling, from, to, v, a, j);
+    };
     for (const TimedLeg& leg : legs) {
-        if (!(leg.tv > 0.0)) continue;
         // A leg both of whose steps are done before `from` adds 0 to the state there: since
         // 2026-11-28 it is left out (it added only its sums' rounding).
-        if (leave_out_finished && leg.finish() < from) continue;
-        const AxisVector dv = leg.delta / leg.tv;
-        const double starts[2] = {leg.rise, leg.rise + leg.fall};
-        const Kernel* kernels[2] = {&leg.rising, &leg.falling};
-        for (int e = 0; e < 2; ++e) {
-            const AxisVector step = e == 0 ? dv : AxisVector(-dv);
-            n = ref_add_knots(knots, n, step, starts[e], *kernels[e], from, to, v, a, j);
+        if (!(leg.tv > 0.0) || (leave_out_finished && leg.finish() < from)) {
+            if (previous != nullptr) add_fall(*previous);
+            previous = nullptr;
+            continue;
         }
+        const AxisVector dv = leg.delta / leg.tv;
+        const bool junction = previous != nullptr && previous->falling.a == leg.rising.a && previous->falling.b == leg.rising.b &&
+                              std::abs(previous->rise + previous->fall - leg.rise) <= 1e-12;
+        if (junction) {
+            n = ref_add_knots(knots, n, AxisVector(dv - previous->delta / previous->tv), leg.rise, leg.rising, from, to, v, a, j);
+        } else {
+            if (previous != nullptr) add_fall(*previous);
+            n = ref_add_knots(knots, n, dv, leg.rise, leg.rising, from, to, v, a, j);
+        }
+        previous = &leg;
     }
+    if (previous != nullptr) add_fall(*previous);
     std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n),
               [](const RefKnot& x, const RefKnot& y) { return x.t < y.t; });
     LimitCheck result;

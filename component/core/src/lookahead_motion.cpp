@@ -270,11 +270,14 @@ void Lookahead::build_legs(std::size_t first) {
             tl.falling = leg.falling;
             legs_.push_back(tl);
         }
+    Step last_step;  // the step the previous block's legs ended on
     for (std::size_t i = first; i < count_; ++i) {
         const Segment& s = seg(i);
         enter_[i] = t;
         leg_begin_[i] = legs_.size();
-        Step step = entry_step(i);
+        // After a junction the entry step is the junction step the block before ended on
+        // (entry_step(i) = junction_step(i - 1), the same arithmetic): kept, not made again.
+        Step step = i > first && seg(i - 1).kind != Kind::stop ? last_step : entry_step(i);
         double centre = t, speed = s.a;
         // The leg from the current step to the next, at the current speed.
         auto leg_to = [&](const Step& next, double next_centre) {
@@ -301,6 +304,7 @@ void Lookahead::build_legs(std::size_t first) {
         }
         const bool stop = i + 1 == count_ || s.kind == Kind::stop;
         leg_to(stop ? stop_step(i) : junction_step(i), t + s.x0 + s.xp + s.x1);
+        last_step = step;
         leg_of_[i] = legs_.empty() ? 0 : legs_.size() - 1;
         when_[i] = centre;
         t = centre + (stop ? s.rest : 0.0);

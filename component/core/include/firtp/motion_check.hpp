@@ -6,7 +6,9 @@
 // kernels' knots: sweeping the knots in time order finds the largest acceleration and jerk
 // exactly, and the largest velocity at a knot or where an acceleration crosses zero. A chain of
 // more stages is bounded by its first two (the others are moving averages, which do not raise a
-// peak).
+// peak). Where one leg falls and the next rises on the same step (a junction: the same kernel at
+// the same time), the two edges are one, of the velocities' difference: half the knots, and no
+// cancelling of two large jumps in the sums.
 //
 // Corners: the tool's position near a corner point P is a sum over the legs in motion; its
 // closest approach is at most the distance at any time, found here by Newton's method on the
