@@ -255,7 +255,7 @@ bool Lookahead::smooth(std::size_t i) const {
 double Lookahead::sparse_estimate(std::size_t i) const {
     const Segment& s = seg(i);
     const double length = seg_length(i);
-    const bool entry = i > 0 && seg(i - 1).kind != Kind::stop, exit = i + 1 < count_ && s.kind != Kind::stop;
+    const bool entry = i > 0 && !entry_is_stop(i), exit = !exit_is_stop(i);
     const double in = entry ? std::min(seg(i - 1).tight_cap, s.feed_max) : 0.0;
     const double out = exit ? std::min(s.tight_cap, s.feed_max) : 0.0;
     double corners = s.feed_max;

@@ -277,7 +277,7 @@ void Lookahead::build_legs(std::size_t first) {
         leg_begin_[i] = legs_.size();
         // After a junction the entry step is the junction step the block before ended on
         // (entry_step(i) = junction_step(i - 1), the same arithmetic): kept, not made again.
-        Step step = i > first && seg(i - 1).kind != Kind::stop ? last_step : entry_step(i);
+        Step step = i > first && !entry_is_stop(i) ? last_step : entry_step(i);
         double centre = t, speed = s.a;
         // The leg from the current step to the next, at the current speed.
         auto leg_to = [&](const Step& next, double next_centre) {
