@@ -4,6 +4,7 @@
 // end point exact, speed <= F, no NaN. And from the planner's counts: no block refused, none
 // slowed below 0.1 % of its feed (where the feed search once gave up and went on unchecked).
 #include "support/reference.hpp"
+#include "support/random_machine.hpp"
 #include "support/separation.hpp"
 
 #include <firtp/measure.hpp>
@@ -98,15 +99,9 @@ RandomProgram random_program(std::mt19937_64& rng, bool three_d) {
     return p;
 }
 
-// Soak runs: FIRTP_RANDOM_SEED shifts every seed, FIRTP_RANDOM_SCALE multiplies every count.
-std::uint64_t seed_offset() {
-    const char* v = std::getenv("FIRTP_RANDOM_SEED");
-    return v ? std::strtoull(v, nullptr, 10) : 0;
-}
-int scaled(int count) {
-    const char* v = std::getenv("FIRTP_RANDOM_SCALE");
-    return v ? count * std::max(1, std::atoi(v)) : count;
-}
+// Soak runs: FIRTP_RANDOM_SEED and FIRTP_RANDOM_SCALE as in support/random_machine.hpp.
+std::uint64_t seed_offset() { return test::random_seed_offset(); }
+int scaled(int count) { return test::random_scaled(count); }
 
 // The planner's counts over a suite, printed for soak runs.
 struct Counts {
