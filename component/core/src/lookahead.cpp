@@ -87,6 +87,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     leg_begin_.resize(segments_.size());
     when_.resize(segments_.size());
     enter_.resize(segments_.size());
+    settled_by_.resize(segments_.size());
     entry_memo_.resize(segments_.size());
     plan_memo_.resize(segments_.size());
     reports_.resize(64);

@@ -272,7 +272,7 @@ void Lookahead::build_legs(std::size_t first) {
         }
     Step last_step;  // the step the previous block's legs ended on
     for (std::size_t i = first; i < count_; ++i) {
-        const Segment& s = seg(i);
+        Segment& s = seg(i);
         enter_[i] = t;
         leg_begin_[i] = legs_.size();
         // After a junction the entry step is the junction step the block before ended on
@@ -308,6 +308,9 @@ void Lookahead::build_legs(std::size_t first) {
         leg_of_[i] = legs_.empty() ? 0 : legs_.size() - 1;
         when_[i] = centre;
         t = centre + (stop ? s.rest : 0.0);
+        s.width = 0.0;
+        for (std::size_t m = leg_begin_[i]; m < legs_.size(); ++m)
+            s.width = std::max({s.width, legs_[m].rising.width(), legs_[m].falling.width()});
     }
     index_legs(legs_);
 }
@@ -329,14 +332,35 @@ double Lookahead::first_kernel_start(std::size_t from, std::size_t k, std::size_
 }
 
 std::size_t Lookahead::context(std::size_t first) const {
+    // A first guess: as far back as the last check needed (covered_from() then widens it as far
+    // as the legs left out still move).
     std::size_t from = first;
     double span = 0.0;
-    while (from > 0 && span < 2.0 * max_width_ + rules_.t2) {
+    while (from > 0 && span < context_span_) {
         --from;
         const Segment& s = seg(from);
         span += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
     }
     return from;
+}
+
+std::size_t Lookahead::covered_from(std::size_t from, std::size_t first, double until) {
+    // Left out of a check from k > 0: the timeline's legs, and those of the segments before k,
+    // each of which ends by the next segment's entry plus half its widest kernel.
+    for (std::size_t k = 0; k < timeline_->size(); ++k) {
+        const Leg& leg = timeline_->at(k);
+        if (!(leg.finish() - timeline_->local_time(leg, timeline_->now()) < until)) return 0;
+    }
+    for (std::size_t j = from; j < first; ++j) settled_by_[j] = enter_[j + 1] + 0.5 * seg(j).width;
+    double t = enter_[from];  // this build's
+    for (std::size_t j = from; j-- > 0;) {
+        const Segment& s = seg(j);
+        settled_by_[j] = t + 0.5 * s.width;
+        t -= s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
+    }
+    std::size_t k = 0;
+    while (k < first && settled_by_[k] < until) ++k;
+    return k;
 }
 
 bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) {
@@ -376,6 +400,18 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     bool sharp = false;  // a step without stages jumps in velocity: no acceleration bounds its chords
     bool one_stage = false;  // ... one stage jumps in acceleration: no jerk bounds it
     std::size_t legs = 0;
+    double begin = 0.0, sweep_from = 0.0;
+    // Every corner the changed motion can reach. The motion changes from the step entering
+    // `changed` on (the legs after it and the junction step before it): nothing moves differently
+    // before its widest kernel starts, nor before the first of their kernels does (2 periods to
+    // spare). A corner whose last check looked only before that passed on this very motion.
+    double unchanged_until = infinity;
+    auto measured = [&](std::size_t i) {
+        const Segment& s = seg(i);
+        return s.kind != Kind::stop && s.turn.beta >= straight_angle && std::isfinite(s.tolerance) &&
+               when_[i] + s.checked_reach >= unchanged_until;
+    };
+    const bool contour = parameters_.tolerance_meaning == ToleranceMeaning::contour;
     for (;;) {
         build_legs(from);
         end = enter_[first], width = 0.0, sharp = false, one_stage = false;
@@ -387,29 +423,43 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             sharp = sharp || leg.rising.width() == 0.0 || leg.falling.width() == 0.0;
             one_stage = one_stage || !(leg.rising.b > 1e-9 * leg.rising.a) || !(leg.falling.b > 1e-9 * leg.falling.a);
         }
-        if (width <= max_width_) break;
-        // A kernel wider than any the context was found with: the sweep below reaches further
-        // back (`begin`), and so must the legs summed there. Without them a step at the
-        // context's edge rose alone, a jump of its leg's whole speed over a 0.14 ms stage
-        // (1.2e9 mm/s^3): a false refusal (random program 422 of seed 31, its corner lowered).
-        max_width_ = width;
-        const std::size_t wider = context(first);
-        if (wider == from) break;
-        from = wider;
+        max_width_ = std::max(max_width_, width);
+        // What ran before now is done (and retired legs are gone from the timeline).
+        begin = std::max(enter_[first] - max_width_, 0.0);
+        // Planning from `first` changes the steps from the one entering first - 1 on (the junction
+        // fields of first - 1 are set with it, and the junction regime before it). Before the
+        // earliest of their kernels starts, the sums are those an accepted plan's check swept: the
+        // sweep starts there (`begin` reaches the widest kernel of the whole program back). Not
+        // from the front, nor over blocks a fallback left unchecked.
+        // Held, the legs after the hold's stop are the resume's plan, not motion: only those up to it
+        // (they had cancelled a hold's braking against the resume's start: 2x an axis' acceleration).
+        bool checked_before = first > from;
+        for (std::size_t i = from; i < first && checked_before; ++i) checked_before = !seg(i).unchecked;
+        sweep_from = checked_before ? std::max(begin, std::min(first_kernel_start(from, first - 1, legs), end)) : begin;
+        unchanged_until = infinity;
+        if (changed < count_) {
+            unchanged_until = enter_[changed] - 0.5 * width;
+            if (changed > from) unchanged_until = std::max(unchanged_until, first_kernel_start(from, changed, legs));
+            unchanged_until -= 2.0 * parameters_.period;
+        }
+        // The legs left out (before `from`) must have come to rest before the sweep starts and
+        // before any corner's measurement looks: a step at the context's edge rising alone is a
+        // jump of its leg's whole speed (1.2e9 mm/s^3 over a 0.14 ms stage: a false refusal,
+        // random program 422 of seed 31). The context is only as wide as the kernels that still
+        // move there: a rapid's, 10x a dense run's, no longer widens every check after it.
+        double until = sweep_from;
+        const double look_back = contour ? contour_reach(max_width_, parameters_.period) : approach_reach(parameters_.period);
+        for (std::size_t i = from; i + 1 < last; ++i)
+            if (measured(i)) until = std::min(until, when_[i] - look_back);
+        const std::size_t covered = covered_from(from, first, until);
+        if (covered >= from) {
+            context_span_ = enter_[first] - enter_[covered];
+            break;
+        }
+        from = covered;
     }
-    // What ran before now is done (and retired legs are gone from the timeline).
-    const double begin = std::max(enter_[first] - max_width_, 0.0);
-    // Planning from `first` changes the steps from the one entering first - 1 on (the junction
-    // fields of first - 1 are set with it, and the junction regime before it). Before the earliest
-    // of their kernels starts, the sums are those an accepted plan's check swept: the sweep starts
-    // there (`begin` reaches the widest kernel of the whole program back, on CAM output with
-    // rapids several times a dense run's). Not from the front, nor over blocks a fallback left
-    // unchecked.
-    // Held, the legs after the hold's stop are the resume's plan, not motion: only those up to it
-    // (they had cancelled a hold's braking against the resume's start: 2x an axis' acceleration).
-    bool checked_before = first > from;
-    for (std::size_t i = from; i < first && checked_before; ++i) checked_before = !seg(i).unchecked;
-    const double sweep_from = checked_before ? std::max(begin, std::min(first_kernel_start(from, first - 1, legs), end)) : begin;
+    ++stats_.checks;
+    stats_.legs_checked += legs;
     LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), sweep_from, end, machine_, parameters_.period);
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
@@ -427,21 +477,10 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
         *bad = nearest;
         return false;
     }
-    // Every corner the changed motion can reach. The motion changes from the step entering
-    // `changed` on (the legs after it and the junction step before it): nothing moves differently
-    // before its widest kernel starts, nor before the first of their kernels does (2 periods to
-    // spare). A corner whose last check looked only before that passed on this very motion.
-    double unchanged_until = infinity;
-    if (changed < count_) {
-        unchanged_until = enter_[changed] - 0.5 * width;
-        if (changed > from) unchanged_until = std::max(unchanged_until, first_kernel_start(from, changed, legs));
-        unchanged_until -= 2.0 * parameters_.period;
-    }
     for (std::size_t i = from; i + 1 < last; ++i) {
+        if (!measured(i)) continue;
         Segment& s = seg(i);
-        if (s.kind == Kind::stop || s.turn.beta < straight_angle || !std::isfinite(s.tolerance)) continue;
-        if (when_[i] + s.checked_reach < unchanged_until) continue;
-        if (parameters_.tolerance_meaning == ToleranceMeaning::contour) {  // the samples across the corner
+        if (contour) {  // the samples across the corner
             double latest = 0.0;
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period, &latest);
             s.checked_reach = latest - when_[i];
@@ -536,7 +575,8 @@ void Lookahead::replan(std::size_t first) {
             // (machine 61, program 1689): nothing is under way to keep, so from rest again.
             if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
             forward(from);
-            for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true;
+            // Not built as planned now: as wide as any kernel checked so far, for context().
+            for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true, seg(i).width = std::max(seg(i).width, max_width_);
             break;
         }
         // A limit failed next to ramps sharing a corner's jerk stage at J T2: an axis swings the

@@ -360,7 +360,7 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         }
     }
     double t = guess, acceleration = HUGE_VAL;  // |a| at the best point
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < approach_steps; ++i) {
         best.latest = std::max(best.latest, t);
         const AxisState s = relative_state(legs, corner, t);
         const double d = s.position.norm();
@@ -369,7 +369,7 @@ Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, do
         const double f = s.position.dot(s.velocity);
         const double df = s.velocity.squaredNorm() + s.position.dot(s.acceleration);
         if (!(df > 0.0)) break;
-        const double step = std::clamp(-f / df, -4.0 * period, 4.0 * period);
+        const double step = std::clamp(-f / df, -approach_step_periods * period, approach_step_periods * period);
         // Within 1 ns of the minimum: the distance here exceeds it by about (v 1 ns)^2 / 2d.
         if (std::abs(step) < 1e-9) break;
         t += step;
@@ -453,7 +453,7 @@ ApproachBounds chain_bounds(std::span<const TimedLeg> legs, const FirChain& chai
 
 double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,
                      double* latest) {
-    const double from = at - 0.5 * width - period, to = at + 0.5 * width + period;
+    const double from = at - contour_reach(width, period), to = at + contour_reach(width, period);
     if (latest != nullptr) *latest = to;
     // The legs commanded while the samples in [from, to] can feel them, and where the first starts
     // (relative to the corner point, the end of legs[corner]).

@@ -160,6 +160,7 @@ private:
         CornerBound bound = CornerBound::feed;  // what limited the speed at the junction
         int bound_axis = -1;
         double enter = 0.0;        // forward pass: its entry step's centre, s (timeline clock)
+        double width = 0.0;        // the widest kernel of its legs when build_legs last made them
     };
 
     // A step of the plan: velocity change, the box of its first stage, its kernel.
@@ -386,7 +387,10 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
-    std::size_t context(std::size_t first) const;  // the segments before `first` whose kernels may reach it
+    std::size_t context(std::size_t first) const;  // where a check from `first` first builds its legs (a guess)
+    // The largest k <= first such that every leg a check from k leaves out has come to rest by
+    // `until` (s from now), as far as this build (from `from`) and the segments' widths tell.
+    std::size_t covered_from(std::size_t from, std::size_t first, double until);
     // The earliest kernel start of segment k's steps and those after it, among legs_[0, legs) as
     // build_legs(from) made them (k >= from); infinity if they have none.
     double first_kernel_start(std::size_t from, std::size_t k, std::size_t legs) const;
@@ -416,6 +420,7 @@ private:
     Regime sparse_;
     Timeline* timeline_;
     double max_width_ = 0.0;
+    double context_span_ = 0.0;  // how far before `first` the last check needed its legs (s): context()'s guess
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
     bool sized_ = false;       // every axis limits jerk: starts and stops are sized (sized())
     // The lowest segment whose ramps' regime junction_caps() changed since the last replan (its
@@ -449,6 +454,7 @@ private:
     std::vector<std::size_t> leg_begin_;  // scratch: ... of its first (legs_.size() if none)
     std::vector<double> when_;          // scratch: exit step centre of each segment (check clock)
     std::vector<double> enter_;         // scratch: entry step centre of each segment
+    std::vector<double> settled_by_;    // scratch (covered_from): when each segment's legs have come to rest
     std::vector<Segment> saved_;        // the accepted plan, restored when a change fails its check
     // A hold's stop placed, or a resume's split undone, changes the segments themselves: the
     // accepted plan is kept whole before, and if no plan after the change passes its check, it

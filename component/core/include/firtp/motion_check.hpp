@@ -107,6 +107,14 @@ struct Approach {
 };
 
 constexpr int sampled_chords = 3;
+// closest_approach's Newton search: at most this many steps from the guess, each at most this many
+// periods (it evaluates the path at no more than approach_steps - 1 of them).
+constexpr int approach_steps = 6;
+constexpr double approach_step_periods = 4.0;
+// How far before its guess closest_approach may look at the path (the search, then the chords).
+constexpr double approach_reach(double period) {
+    return ((approach_steps - 1) * approach_step_periods + sampled_chords + 1) * period;
+}
 constexpr int max_phases = 16;  // sample grids closest_approach takes (more are taken as 16)
 
 // What closest_approach may lean on to spare sampling the chords between the samples. A chord
@@ -140,5 +148,7 @@ ApproachBounds chain_bounds(std::span<const TimedLeg> legs, const FirChain& chai
 // time it looked at the path (as Approach::latest).
 double contour_error(std::span<const TimedLeg> legs, std::size_t corner, double at, double width, double period,
                      double* latest = nullptr);
+// How far before `at` contour_error looks at the samples.
+constexpr double contour_reach(double width, double period) { return 0.5 * width + period; }
 
 }  // namespace firtp

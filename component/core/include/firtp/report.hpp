@@ -41,6 +41,8 @@ struct PlannerStats {
     std::uint64_t crawling = 0;  // ... below 0.1 % of it
     std::uint64_t refused = 0;   // blocks no speed could plan (paper mode: no feed passed the check)
     std::uint64_t checks_failed = 0;  // plans the exact check turned back (corner speed lowered)
+    std::uint64_t checks = 0;         // plans the exact check measured
+    std::uint64_t legs_checked = 0;   // the legs those checks summed: their context and the changed tail
     std::uint64_t unfit = 0;          // segment plans whose legs did not cover the block (a defect)
 };
 
