@@ -7,6 +7,7 @@
 #include "support/limits.hpp"
 #include "support/reference.hpp"
 #include "support/separation.hpp"
+#include "support/soak.hpp"
 
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
@@ -100,11 +101,9 @@ TEST(RateLimits, FromTheAxisLimitsAndTheReserve) {
 }
 
 TEST(RateLimits, OverrideHoldAndAbortAtRandomMomentsKeepLimitsToleranceAndEnd) {
-    // Soak: FIRTP_RANDOM_SEED shifts the seed, FIRTP_RANDOM_SCALE multiplies the count.
-    const char* seed_text = std::getenv("FIRTP_RANDOM_SEED");
-    const char* scale_text = std::getenv("FIRTP_RANDOM_SCALE");
-    std::mt19937_64 rng(23 + (seed_text ? std::strtoull(seed_text, nullptr, 10) : 0));
-    const int programs = 120 * (scale_text ? std::max(1, std::atoi(scale_text)) : 1);
+    std::mt19937_64 rng(23 + test::random_seed_offset());  // soak runs: support/soak.hpp
+    // Never fewer than 120: the counts of holds and aborts below are asserted.
+    const int programs = std::max(120, test::random_scaled(120));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double worst = 0.0, worst_stop_ratio = 0.0;
     int holds = 0, aborts = 0;

@@ -4,7 +4,7 @@
 // end point exact, speed <= F, no NaN. And from the planner's counts: no block refused, none
 // slowed below 0.1 % of its feed (where the feed search once gave up and went on unchecked).
 #include "support/reference.hpp"
-#include "support/random_machine.hpp"
+#include "support/soak.hpp"
 #include "support/separation.hpp"
 
 #include <firtp/measure.hpp>
@@ -99,10 +99,6 @@ RandomProgram random_program(std::mt19937_64& rng, bool three_d) {
     return p;
 }
 
-// Soak runs: FIRTP_RANDOM_SEED and FIRTP_RANDOM_SCALE as in support/random_machine.hpp.
-std::uint64_t seed_offset() { return test::random_seed_offset(); }
-int scaled(int count) { return test::random_scaled(count); }
-
 // The planner's counts over a suite, printed for soak runs.
 struct Counts {
     int programs = 0;
@@ -138,8 +134,8 @@ Trajectory plan_checked(const RandomProgram& p, Counts& counts) {
 }
 
 void check_paths(std::uint64_t seed, int count, bool three_d, ToleranceMeaning meaning) {
-    seed += seed_offset();
-    count = scaled(count);
+    seed += test::random_seed_offset();
+    count = test::random_scaled(count);
     std::mt19937_64 rng(seed);
     Counts counts;
     for (int k = 0; k < count; ++k) {
@@ -178,9 +174,9 @@ TEST(RandomPaths, PlanarCornerPointTolerance) { check_paths(1, 1500, false, Tole
 TEST(RandomPaths, SpatialCornerPointTolerance) { check_paths(2, 1500, true, ToleranceMeaning::corner_point); }
 
 TEST(RandomPaths, ContourToleranceHoldsOnTheWholePath) {
-    std::mt19937_64 rng(3 + seed_offset());
+    std::mt19937_64 rng(3 + test::random_seed_offset());
     Counts counts;
-    for (int k = 0; k < scaled(800); ++k) {
+    for (int k = 0; k < test::random_scaled(800); ++k) {
         RandomProgram p = random_separated_program(rng, k % 2 == 0);
         p.parameters.tolerance_meaning = ToleranceMeaning::contour;
         double smallest = 1e300;

@@ -3,6 +3,7 @@
 // own steps (the same program read with Q0), and for what ends a collection. That the blocks are
 // LinuxCNC's own is checked inside LinuxCNC: linuxcnc_tp.naive_cam_headless.
 #include "gcode_test_support.hpp"
+#include "../core/support/soak.hpp"
 
 #include <firtp/gcode.hpp>
 
@@ -92,10 +93,8 @@ void expect_linuxcnc_rule(const Program& steps, const Program& joined, double q)
 
 // FIRTP_RANDOM_SEED and FIRTP_RANDOM_SCALE as in the other randomized suites.
 TEST(NaiveCam, JoinsTheStepsTheRuleJoins) {
-    const char* seed_text = std::getenv("FIRTP_RANDOM_SEED");
-    const char* scale_text = std::getenv("FIRTP_RANDOM_SCALE");
-    std::mt19937_64 rng(11 + (seed_text ? std::strtoull(seed_text, nullptr, 10) : 0));
-    const int count = 40 * (scale_text ? std::max(1, std::atoi(scale_text)) : 1);
+    std::mt19937_64 rng(11 + firtp::test::random_seed_offset());
+    const int count = firtp::test::random_scaled(40);
     std::size_t steps = 0, blocks = 0;
     for (int n = 0; n < count; ++n) {
         const double noise = n % 2 == 0 ? 0.0 : 0.002 * (1 + n % 5);

@@ -5,6 +5,7 @@
 // the finite differences, the end exactly on the last point, no NaN. FIRTP_RANDOM_SEED and
 // FIRTP_RANDOM_SCALE as in the core suite.
 #include "gcode_test_support.hpp"
+#include "../core/support/soak.hpp"
 
 #include <firtp/machine.hpp>
 #include <firtp/measure.hpp>
@@ -113,10 +114,8 @@ std::string random_program(std::mt19937_64& rng) {
 }  // namespace
 
 TEST(RandomPrograms, ArcsHelicesAndRotaryAxesKeepToleranceLimitsAndEnd) {
-    const char* seed_text = std::getenv("FIRTP_RANDOM_SEED");
-    const char* scale_text = std::getenv("FIRTP_RANDOM_SCALE");
-    std::mt19937_64 rng(5 + (seed_text ? std::strtoull(seed_text, nullptr, 10) : 0));
-    const int count = 150 * (scale_text ? std::max(1, std::atoi(scale_text)) : 1);
+    std::mt19937_64 rng(5 + firtp::test::random_seed_offset());  // soak runs: core/support/soak.hpp
+    const int count = firtp::test::random_scaled(150);
     const firtp::MachineConfig machine = five_axis();
     const firtp::PlannerParameters parameters = machine.planner_parameters();
     int arcs = 0, junctions = 0;

@@ -253,10 +253,7 @@ void Lookahead::build_legs(std::size_t first) {
     // Times in seconds from the timeline's now. Segment 0 starts at the frozen step (moving) or
     // at its start step.
     double t = frozen_.moving ? frozen_centre() : next_step().centre;
-    for (std::size_t i = 0; i < first; ++i) {
-        const Segment& s = seg(i);
-        t += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
-    }
+    for (std::size_t i = 0; i < first; ++i) t += span(seg(i));
     if (first == 0)
         for (std::size_t k = 0; k < timeline_->size(); ++k) {
             if (frozen_.moving && k + 1 == timeline_->size()) break;  // the current leg: from the plan below
@@ -335,12 +332,8 @@ std::size_t Lookahead::context(std::size_t first) const {
     // A first guess: as far back as the last check needed (covered_from() then widens it as far
     // as the legs left out still move).
     std::size_t from = first;
-    double span = 0.0;
-    while (from > 0 && span < context_span_) {
-        --from;
-        const Segment& s = seg(from);
-        span += s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
-    }
+    double back = 0.0;
+    while (from > 0 && back < context_span_) back += span(seg(--from));
     return from;
 }
 
@@ -356,7 +349,7 @@ std::size_t Lookahead::covered_from(std::size_t from, std::size_t first, double 
     for (std::size_t j = from; j-- > 0;) {
         const Segment& s = seg(j);
         settled_by_[j] = t + 0.5 * s.width;
-        t -= s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0);
+        t -= span(s);
     }
     std::size_t k = 0;
     while (k < first && settled_by_[k] < until) ++k;

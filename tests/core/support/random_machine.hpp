@@ -9,6 +9,7 @@
 #pragma once
 
 #include "separation.hpp"
+#include "soak.hpp"
 
 #include <firtp/parameters.hpp>
 #include <firtp/types.hpp>
@@ -147,18 +148,6 @@ inline CliffsProgram cliffs_program(std::mt19937_64& rng) {
     CliffsProgram p{random_case(rng), {}};
     for (unsigned& axis : p.raised_axis) axis = static_cast<unsigned>(rng() % static_cast<unsigned>(p.c.parameters.limits.axes));
     return p;
-}
-
-// Soak runs: FIRTP_RANDOM_SEED shifts every seed, FIRTP_RANDOM_SCALE multiplies every count (a
-// fraction too: .ci/run's sanitized pass runs half of each suite the plain build ran whole).
-inline std::uint64_t random_seed_offset() {
-    const char* v = std::getenv("FIRTP_RANDOM_SEED");
-    return v ? std::strtoull(v, nullptr, 10) : 0;
-}
-inline int random_scaled(int count) {
-    const char* v = std::getenv("FIRTP_RANDOM_SCALE");
-    const double scale = v ? std::strtod(v, nullptr) : 1.0;
-    return scale > 0.0 ? std::max(1, static_cast<int>(std::lround(count * scale))) : count;
 }
 
 }  // namespace firtp::test

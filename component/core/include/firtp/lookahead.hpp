@@ -387,6 +387,8 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
+    // From a segment's entry step to the next segment's: its legs, and a stop's rest.
+    static double span(const Segment& s) { return s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0); }
     std::size_t context(std::size_t first) const;  // where a check from `first` first builds its legs (a guess)
     // The largest k <= first such that every leg a check from k leaves out has come to rest by
     // `until` (s from now), as far as this build (from `from`) and the segments' widths tell.
