@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace firtp::cli {
 namespace {
@@ -65,13 +66,13 @@ void print_events(std::ostream& out, const Program& program, std::size_t blocks)
 
 void print_summary(std::ostream& out, const PlanRun& run, const std::string& program_name,
                    const std::vector<std::filesystem::path>& written) {
-    std::size_t exact = 0;
-    for (const CornerReport& c : run.corners) exact += c.exact_stop ? 1 : 0;
+    std::size_t exact = 0, paying = 0;  // stops, and those of them where blending would take longer
+    for (const CornerReport& c : run.corners) exact += c.exact_stop ? 1 : 0, paying += c.bound == CornerBound::stop_pays ? 1 : 0;
     const Measured& m = run.measured;
     out << "program      " << program_name << "\n"
         << "machine      " << machine_text(run) << "\n"
         << "blocks       " << run.points.size() - 1 << " moving, " << run.corners.size() << " corners ("
-        << exact << " exact stop)\n";
+        << exact << " exact stop" << (paying > 0 ? ", " + std::to_string(paying) + " of them faster than blending" : "") << ")\n";
     if (run.program.joined.moves > 0)  // G64 Q: as LinuxCNC's task joins them (naive_cam.hpp)
         out << "naive CAM    " << run.program.joined.moves << " G1 moves joined longer blocks within G64 Q, as LinuxCNC "
             << "joins them (Q0 keeps every move); farthest " << fixed_text(run.program.joined.farthest, 4)

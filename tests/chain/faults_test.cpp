@@ -269,7 +269,6 @@ struct Network {
             if (k == hold_from) h.hold(true);
             if (k == hold_to) h.hold(false);
             step(&h);
-            if (getenv("DBGF") && k % 500 == 0 && !statuses.empty()) { auto& st = statuses.back(); fprintf(stderr, "k %d next %ld depth %d free %d line %d state %d fs %g err %d pos %g %g v %g %g\n", k, (long)st.next_seq, st.queue_depth, st.queue_free, st.current_line, st.state, st.feed_scale, st.error_code, states.back().position[0], states.back().position[1], states.back().velocity[0], states.back().velocity[1]); }
         }
         return h.result();
     }

@@ -130,7 +130,7 @@ void Lookahead::pop_front(bool stop) {
         r.epsilon = s.tolerance;
         r.exact_stop = s.kind == Kind::stop || count_ == 1;
         r.predicted_error = s.exact_stop || r.exact_stop ? 0.0 : s.predicted_error;
-        r.bound = r.exact_stop ? CornerBound::stop : s.bound;
+        r.bound = r.exact_stop ? stop_bound(s) : s.bound;
         r.axis = s.bound_axis;
         if (count_ > 1) {  // the end of the program is not a corner
             reports_[(report_head_ + report_count_) % reports_.size()] = r;
@@ -614,7 +614,7 @@ void Lookahead::replan(std::size_t first) {
         Segment& s = seg(i);
         s.bound_axis = -1;
         if (s.kind == Kind::stop) {
-            s.bound = CornerBound::stop;
+            s.bound = stop_bound(s);
             continue;
         }
         const double c = std::max(s.b, s.next_a);

@@ -232,8 +232,14 @@ private:
     // ends, each ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
     Regime ramp_on_block(std::size_t i, const Regime& ramp) const;
     Regime ramp_sharing(const Regime& corner) const;  // a ramp sharing the corner's jerk stage: boxes up to J T2 (set_junction)
-    double ramps_loss(std::size_t i, const Regime& regime, double v) const;  // corner i at v: time lost, s
-    bool tight_pays(std::size_t i, const Regime& tight, double cap, double machine) const;
+    bool tight_pays(std::size_t i, const Regime& tight, double tight_alpha, double cap, const Regime& machine, double machine_alpha,
+                    double machine_cap) const;
+    double blend_loss(std::size_t i, const Regime& regime, double turn_alpha, double v) const;  // corner i at v: time lost, s
+    double stop_loss(std::size_t i) const;                                                       // a stop there: time lost, s
+    bool stop_pays(std::size_t i, double v) const;  // sparse corner i passed at v loses more than a stop there
+    CornerBound stop_bound(const Segment& s) const {  // what the report says of a stop
+        return s.cap_bound == CornerBound::stop_pays && !stops_whatever_follows(s) ? CornerBound::stop_pays : CornerBound::stop;
+    }
     Step in_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, in_ramp_regime(i)); }   // a -> p
     Step out_ramp_step(std::size_t i, double dv) const { return make_step(dv * seg(i).u, out_ramp_regime(i)); }  // p -> b
     // The start and the stop of a block in the machine's regime are sized to themselves

@@ -15,6 +15,7 @@ enum class CornerBound : std::uint8_t {
     lookahead,    // a later corner or the stop at the end of the known path
     checked,      // the closed-form estimate was lowered after the exact check
     stop,         // an exact stop: asked for, a reversal, or the end of the program
+    stop_pays,    // a stop where blending would take longer (a slow turn between long blocks)
 };
 const char* describe(CornerBound bound);
 
