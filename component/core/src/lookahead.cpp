@@ -347,14 +347,14 @@ void Lookahead::set_junction(std::size_t i) {
     Segment& s = seg(i);
     const Segment& n = seg(i + 1);
     s.out_ramp = seg(i + 1).in_ramp = Regime{-1.0};
-    if (stops_whatever_follows(s)) {
+    const auto stop = [&s](CornerBound why) {  // the junction is a stop, for this reason
         s.kind = Kind::stop;
         s.corner_cap = 0.0;
-        s.cap_bound = CornerBound::stop;
+        s.cap_bound = why;
         s.junction = s.regime;
         s.turn_alpha = 0.0;
-        return;
-    }
+    };
+    if (stops_whatever_follows(s)) return stop(CornerBound::stop);
     s.kind = s.dense && n.dense ? Kind::dense : Kind::corner;
     s.junction = junction_regime(s.dense, s.regime, n.dense, n.regime);
     s.turn_alpha = box(s.turn.du, s.junction);
@@ -376,27 +376,14 @@ void Lookahead::set_junction(std::size_t i) {
                 s.junction = tight, s.turn_alpha = alpha, s.corner_cap = cap, tight_corner = true;
         }
     }
-    if (s.kind == Kind::corner && std::isfinite(s.corner_cap) && stop_pays(i, s.corner_cap)) {
-        s.kind = Kind::stop;
-        s.cap_bound = CornerBound::stop_pays;
-        s.junction = s.regime;
-        s.turn_alpha = 0.0;
-        s.corner_cap = 0.0;
-        return;
-    }
+    if (s.kind == Kind::corner && std::isfinite(s.corner_cap) && stop_pays(i, s.corner_cap)) return stop(CornerBound::stop_pays);
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
         for (std::size_t k : {i, i + 1})
             if (seg(k).dense) {
                 const double room = room_cap(k, s.turn_alpha);
                 if (room < s.corner_cap) s.corner_cap = room, s.cap_bound = CornerBound::room;
             }
-    if (!(s.corner_cap > 0.0)) {  // no speed passes it: a stop
-        s.kind = Kind::stop;
-        s.cap_bound = CornerBound::stop;
-        s.junction = s.regime;
-        s.turn_alpha = 0.0;
-        return;
-    }
+    if (!(s.corner_cap > 0.0)) return stop(CornerBound::stop);  // no speed passes it (corner_cap is read of corners only)
     // A corner in a dense run's regime: the ramps beside it on a sparse block share its jerk stage,
     // their boxes up to J T2 (a box alone at that height keeps the jerk at J; where an axis swings
     // the other way within T2 the exact check finds it, and they keep the run's caps: replan).
