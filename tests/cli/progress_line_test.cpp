@@ -92,10 +92,11 @@ TEST(ProgressLine, AtMostOnceAnInterval) {
 TEST(ProgressLine, FirtpPlanOnATerminal) {
     Pty pty;
     if (pty.master < 0) GTEST_SKIP() << "no pseudo-terminal here";
-    // Long enough to plan that the line shows however fast planning gets: 1,000 s of samples.
+    // Long enough to plan that the line shows (its first draw comes after 250 ms): 4,000 s of
+    // samples. (At F600, 1,000 s, planning got fast enough to end before the first draw: 0.3 s.)
     cli_test::TempDir dir;
     std::ostringstream text;
-    text << "G21 G90 G64 P0.05\nG1 F600\n";
+    text << "G21 G90 G64 P0.05\nG1 F150\n";
     for (int i = 1; i <= 20000; ++i) text << "X" << i * 0.5 << " Y" << (i % 2) * 0.2 << "\n";
     text << "M2\n";
     cli_test::write_file(dir / "long.ngc", text.str());
