@@ -18,7 +18,7 @@ namespace {
 namespace shim = firtp::hal_shim;
 
 constexpr int axes = 3;
-constexpr double period = 0.001, v_max = 250.0, a_max = 3000.0, j_max = 1e5;
+constexpr double servo_period = 0.001, v_max = 250.0, a_max = 3000.0, j_max = 1e5;
 const std::vector<std::string> arguments = {
     "axes=3", "stages=2", "t1=0.1", "t2=0.03", "block_key=0", "state_key=0",
     "max_velocity=250,250,250", "max_acceleration=3000,3000,3000", "max_jerk=1e5,1e5,1e5"};
@@ -54,7 +54,7 @@ struct Drive {
         }
     }
     void coast() {
-        for (int a = 0; a < axes; ++a) p[a] += v[a] * period;
+        for (int a = 0; a < axes; ++a) p[a] += v[a] * servo_period;
     }
     void feed_back() {
         for (int a = 0; a < axes; ++a) {
@@ -104,8 +104,8 @@ TEST(ComponentRestart, TheNewComponentBrakesFromTheFeedbackWithinTheLimits) {
                 jump = std::max(jump, std::abs(drive.p[a] - p0[a]));
                 velocity_step = std::max(velocity_step, std::abs(drive.v[a] - v0[a]));
             } else {
-                worst_a = std::max(worst_a, std::abs(drive.v[a] - before[a]) / period);  // finite differences
-                worst_j = std::max(worst_j, std::abs(acc - previous_a[a]) / period);
+                worst_a = std::max(worst_a, std::abs(drive.v[a] - before[a]) / servo_period);  // finite differences
+                worst_j = std::max(worst_j, std::abs(acc - previous_a[a]) / servo_period);
             }
             ASSERT_LE(std::abs(drive.v[a]), v_max * (1 + 1e-9));
             ASSERT_LE(std::abs(acc), a_max * (1 + 1e-9));
@@ -122,7 +122,7 @@ TEST(ComponentRestart, TheNewComponentBrakesFromTheFeedbackWithinTheLimits) {
     EXPECT_LE(worst_a, a_max);
     EXPECT_LE(worst_j, j_max * (1 + 1e-6));
     const double td = 0.13;  // T1 + T2
-    EXPECT_NEAR(ticks * period, td, 0.002);
+    EXPECT_NEAR(ticks * servo_period, td, 0.002);
     for (int a = 0; a < axes; ++a) EXPECT_NEAR(drive.p[a], p0[a] + v0[a] * td / 2, 1e-9);  // rest: p + v Td / 2
     EXPECT_EQ(get("firtp.state"), 4.0);  // error: the interrupted motion does not go on
     std::printf("restarted at %.1f mm/s: first command %.2g mm / %.2g mm/s from the feedback; braked in %d ms over "

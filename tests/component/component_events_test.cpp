@@ -17,10 +17,10 @@ using firtp::test::xyz;
 
 namespace {
 
-struct FakeStream {
+struct EventStream {
     std::deque<stream::BlockRecord> records;
     static bool read(void* self, stream::BlockRecord& r) {
-        auto* s = static_cast<FakeStream*>(self);
+        auto* s = static_cast<EventStream*>(self);
         if (s->records.empty()) return false;
         r = s->records.front();
         s->records.pop_front();
@@ -78,10 +78,10 @@ struct Program {
     }
 };
 
-struct Servo {
-    explicit Servo(const ComponentSettings& s) : core(s) {}
+struct EventServo {
+    explicit EventServo(const ComponentSettings& s) : core(s) {}
     ComponentLogic core;
-    FakeStream stream;
+    EventStream stream;
     ComponentInputs in;
     ComponentOutputs out;
     std::vector<AxisState> samples;
@@ -110,7 +110,7 @@ void expect_dwell_as_planned(const ComponentSettings& settings) {
     program.event(EventKind::dwell, 0.5, 2);
     program.block(second);
     program.block(third);
-    Servo run(settings);
+    EventServo run(settings);
     run.stream.records = program.records;
     run.ticks(2500);
     const Trajectory without = plan_trajectory(settings.planner, AxisVector::Zero(), std::vector<Block>{first, second, third});
@@ -143,7 +143,7 @@ TEST(ComponentEvents, EventsFireWhenMotionReachesThemInOrder) {
     program.event(EventKind::flood_on, 0, 2);
     program.block(move(10, 10, Termination::blend, 3));
     program.event(EventKind::program_end, 0, 4);
-    Servo run(paper_settings());
+    EventServo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(1);
     EXPECT_TRUE(run.out.events.spindle_on);  // before the first block: at once
@@ -174,7 +174,7 @@ TEST(ComponentEvents, AToolChangeWaitsAtRestForToolChanged) {
     program.event(EventKind::tool_select, 3, 2);
     program.event(EventKind::tool_change, 3, 2);
     program.block(move(10, 10, Termination::exact_stop, 3));
-    Servo run(limit_settings());
+    EventServo run(limit_settings());
     run.stream.records = program.records;
     int change_at = -1;
     for (int k = 0; k < 3000 && change_at < 0; ++k) {
@@ -212,7 +212,7 @@ TEST(ComponentEvents, ABlockBeforeAToolChangeStartsAtOnce) {
     program.block(blocks[2]);
     program.event(EventKind::program_end, 0, 6);
     const ComponentSettings settings = limit_settings();
-    Servo run(settings);
+    EventServo run(settings);
     run.stream.records = program.records;
     for (int k = 0; k < 5000; ++k) {
         run.in.events.tool_changed = run.out.events.tool_change;  // net tool-change tool-changed
@@ -248,7 +248,7 @@ TEST(ComponentEvents, APauseWaitsForResumeAndM1OnlyWithOptionalStop) {
     program.block(move(10, 10, Termination::exact_stop, 3));
     program.event(EventKind::pause, 0, 4);
     program.block(move(0, 10, Termination::exact_stop, 5));
-    Servo run(paper_settings());
+    EventServo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(3000);
     EXPECT_TRUE(run.at(xyz(10, 10)));
@@ -266,7 +266,7 @@ TEST(ComponentEvents, AGapOrARepeatAmongEventsIsCaught) {
     program.event(EventKind::flood_on, 0, 2);
     stream::BlockRecord repeat = program.records.back();
     program.records.push_back(repeat);  // the same event again: never twice
-    Servo run(paper_settings());
+    EventServo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(2000);
     EXPECT_EQ(run.out.error, ComponentError::repeated);
@@ -276,7 +276,7 @@ TEST(ComponentEvents, AGapOrARepeatAmongEventsIsCaught) {
     gap.block(move(10, 0, Termination::exact_stop, 1));
     ++gap.seq;  // seq 2 lost
     gap.event(EventKind::flood_on, 0, 2);
-    Servo lost(paper_settings());
+    EventServo lost(paper_settings());
     lost.stream.records = gap.records;
     lost.ticks(2000);
     EXPECT_EQ(lost.out.error, ComponentError::sequence_gap);
@@ -288,7 +288,7 @@ TEST(ComponentEvents, AnUnknownEventCodeStopsTheProgram) {
     Program program;
     program.block(move(10, 0, Termination::exact_stop, 1));
     program.event(static_cast<EventKind>(event_kinds), 0, 2);
-    Servo run(paper_settings());
+    EventServo run(paper_settings());
     run.stream.records = program.records;
     run.ticks(2000);
     EXPECT_EQ(run.out.error, ComponentError::bad_type);

@@ -26,7 +26,7 @@ using namespace firtp;
 
 namespace {
 
-struct Outcome {
+struct LimitedOutcome {
     std::vector<AxisState> samples;
     std::vector<AxisVector> points{AxisVector::Zero()};
     double longest_stop = 0.0;  // s, from a hold or an abort to rest
@@ -34,9 +34,9 @@ struct Outcome {
 };
 
 // Plans `blocks` and runs them, changing the rate at the given ticks (< 0: abort).
-Outcome run(const PlannerParameters& p, const std::vector<Block>& blocks, const std::vector<std::pair<int, double>>& events) {
+LimitedOutcome run_limited(const PlannerParameters& p, const std::vector<Block>& blocks, const std::vector<std::pair<int, double>>& events) {
     Planner planner(p, AxisVector::Zero());
-    Outcome r;
+    LimitedOutcome r;
     std::size_t next = 0, event = 0;
     int stopping_since = -1;
     for (int k = 0; k < 20000000; ++k) {
@@ -101,10 +101,10 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
             rate_events(rng, 0, p, holds_asked, k);
             continue;
         }
-        const Outcome reference = run(p, c.blocks, {});
+        const LimitedOutcome reference = run_limited(p, c.blocks, {});
         const std::vector<std::pair<int, double>> events =
             rate_events(rng, static_cast<int>(reference.samples.size()), p, holds_asked, k);
-        const Outcome r = run(p, c.blocks, events);
+        const LimitedOutcome r = run_limited(p, c.blocks, events);
         SCOPED_TRACE("program " + std::to_string(k));
         const int parts_before = ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
         [&] {  // every program is checked; its first failure ends its checks
@@ -194,7 +194,7 @@ TEST(Hold, InsideABlockThatEndsInAStop) {
             blocks[1].target[1] = 50.0;
             blocks[1].line = 2;
         }
-        const Outcome r = run(p, blocks, {{500, 0.0}, {3000, 1.0}});  // hold at 0.5 s, 100 mm before the stop
+        const LimitedOutcome r = run_limited(p, blocks, {{500, 0.0}, {3000, 1.0}});  // hold at 0.5 s, 100 mm before the stop
         ASSERT_GT(r.longest_stop, 0.0);
         EXPECT_LE(r.longest_stop, hold_time_bound(p) + 2 * p.period);
         const AxisState& held = r.samples[2999];

@@ -44,7 +44,7 @@ template <class Message> void write(lcm::LogFile& log, const std::string& channe
     write_bytes(log, channel, timestamp, bytes);
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
 
 // Blocks 1 2 4 5 (3 lost), 5 again, then 3 late; a second program; status 1 2; axis states 1 2 5;
 // one control; one event of a foreign type.

@@ -31,7 +31,7 @@ std::uint32_t last_four(const Bytes& bytes) {
            bytes[n - 1];
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
 
 // Flips every bit of the sealed message's encoding, one at a time: receive() must report each as
 // corrupted. Counts too how many damaged copies LCM alone would have delivered as a valid message

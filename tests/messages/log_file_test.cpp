@@ -29,7 +29,7 @@ void write_event(lcm::LogFile& log, const std::string& channel, std::int64_t tim
 
 
 
-firtp_lcm::control_t sample_control() {
+firtp_lcm::control_t logged_control() {
     firtp_lcm::control_t control{};
     control.utime = 13;
     control.seq = 2;
@@ -50,7 +50,7 @@ TEST(LogFile, EachTypeRoundTrips) {
     const auto block = test::sample_message(12);
     const auto status = sample_status();
     const auto axis_state = sample_axis_state();
-    const auto control = sample_control();
+    const auto control = logged_control();
     {
         lcm::LogFile log(file.string(), "w");
         ASSERT_TRUE(log.good());

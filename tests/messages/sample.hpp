@@ -59,6 +59,9 @@ inline firtp_lcm::axis_state_t sample_axis_state() {
     return state;
 }
 
+// Whether `part` occurs in `text`.
+inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 inline firtp_lcm::control_t sample_control() {
     firtp_lcm::control_t c{};
     c.utime = 123456789;

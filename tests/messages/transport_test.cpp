@@ -17,7 +17,7 @@ std::string open_error(const std::string& url) {
     return "(opened)";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
 
 // Sets an environment variable for one scope.
 class ScopedEnv {

@@ -18,10 +18,7 @@ using firtp::Termination;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-firtp::Program parse(std::string_view text, const MachineConfig& machine = firtp::default_machine(),
-                     const AxisVector& start = AxisVector::Zero()) {
-    return firtp::parse_gcode(std::string(text) + "\nM2\n", "t.ngc", machine, start);
-}
+using firtp::test::parse;
 
 AxisVector xyz(double x, double y, double z = 0.0) {
     AxisVector v = AxisVector::Zero();
