@@ -17,17 +17,7 @@ using firtp::test::xyz;
 
 namespace {
 
-struct EventStream {
-    std::deque<stream::BlockRecord> records;
-    static bool read(void* self, stream::BlockRecord& r) {
-        auto* s = static_cast<EventStream*>(self);
-        if (s->records.empty()) return false;
-        r = s->records.front();
-        s->records.pop_front();
-        return true;
-    }
-    BlockSource source() { return {read, this}; }
-};
+using test::FakeStream;
 
 ComponentSettings paper_settings() {
     ComponentSettings s;
@@ -81,7 +71,7 @@ struct Program {
 struct EventServo {
     explicit EventServo(const ComponentSettings& s) : core(s) {}
     ComponentLogic core;
-    EventStream stream;
+    FakeStream stream;
     ComponentInputs in;
     ComponentOutputs out;
     std::vector<AxisState> samples;

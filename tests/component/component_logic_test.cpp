@@ -19,19 +19,7 @@ using firtp::test::xyz;
 
 namespace {
 
-struct FakeStream {
-    std::deque<stream::BlockRecord> records;
-    int reads = 0;
-    static bool read(void* self, stream::BlockRecord& r) {
-        auto* s = static_cast<FakeStream*>(self);
-        if (s->records.empty()) return false;
-        r = s->records.front();
-        s->records.pop_front();
-        ++s->reads;
-        return true;
-    }
-    BlockSource source() { return {read, this}; }
-};
+using test::FakeStream;
 
 ComponentSettings settings() {
     ComponentSettings s;
