@@ -20,10 +20,33 @@
 using namespace firtp;
 using test::block_message;
 
-namespace {
-
-
-}  // namespace
+// The bridge falls behind twice (firtp.so's 50-period axis-state stream overflows): every
+// missing period is a gap in the ticks, and the latest status counts them all, as the pin
+// firtp.state-overruns does (a LinuxCNC integrator compares the two).
+TEST(Bridge, StatesLostTwiceAreCountedInAll) {
+    InProcessSettings settings;
+    settings.stream_depth = 50;
+    test::Chain chain(test::message_machine(), settings);
+    chain.publish(block_message(10, 0, 5, 1, 11));
+    chain.run(5);
+    for (const int behind : {80, 61}) {
+        for (int k = 0; k < behind; ++k) chain.chain->step();  // the bridge not polled
+        chain.run(5);
+    }
+    std::int64_t missing = 0, gaps = 0, latest = 0, latest_tick = 0;
+    for (std::size_t i = 1; i < chain.states.size(); ++i) {
+        const std::int64_t gap = chain.states[i].tick - chain.states[i - 1].tick - 1;
+        if (gap == 0) continue;
+        ++gaps, missing += gap, latest = gap, latest_tick = chain.states[i].tick;
+    }
+    EXPECT_EQ(gaps, 2);
+    EXPECT_GT(latest, 0);
+    EXPECT_GT(missing, latest);
+    ASSERT_EQ(chain.status().error_code, firtp_lcm::status_t::ERROR_LOST_STATE);
+    EXPECT_EQ(chain.status().error_text, std::to_string(missing) + " axis states lost, the latest " + std::to_string(latest) +
+                                             " before tick " + std::to_string(latest_tick) +
+                                             " (the bridge fell behind the servo thread)");
+}
 
 TEST(Bridge, RunsAProgramAndReportsProgress) {
     test::Chain chain(test::message_machine());

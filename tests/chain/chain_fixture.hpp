@@ -21,8 +21,8 @@ struct Chain {
     std::vector<firtp_lcm::status_t> statuses;
     std::int64_t control_seq = 0;
 
-    explicit Chain(const MachineConfig& machine) {
-        chain = std::make_unique<InProcessComponent>(*lcm, machine, default_module_path());
+    explicit Chain(const MachineConfig& machine, const InProcessSettings& settings = {}) {
+        chain = std::make_unique<InProcessComponent>(*lcm, machine, default_module_path(), settings);
         messages::keep_everything(lcm->subscribe(messages::axis_state_channel, &Chain::on_state, this));
         messages::keep_everything(lcm->subscribe(messages::status_channel, &Chain::on_status, this));
     }

@@ -134,6 +134,7 @@ private:
     std::int64_t status_seq_ = 0;
     std::int64_t state_seq_ = 0;
     std::int64_t last_tick_ = -1;      // 64-bit extension of the stream's 32-bit tick
+    std::int64_t lost_states_ = 0;     // periods missing from the ticks since the start
     std::int64_t periods_since_status_ = 0;
     bool status_due_ = true;
     lcm::Subscription* block_subscription_ = nullptr;
