@@ -9,7 +9,10 @@
 // completed program ends on its last target within 1e-9 mm with every block accepted once
 // (repeats refused, nothing skipped), every fault ends its program with its error. Memory: the
 // resident set (/proc/self/statm) is sampled at each report; after the first report it must not
-// grow by more than 1 MiB. Exit 0 when everything held, 1 otherwise.
+// grow by more than 1 MiB. Exit 0 when everything held, 1 otherwise. Each report also gives the
+// slowest update since the one before and how many took over 1 ms (wall clock): planning-time
+// regressions show there (docs/HARDENING.md, Soak).
+#include "bench_stats.hpp"
 #include "random_operation.hpp"
 
 #include <unistd.h>
@@ -42,10 +45,19 @@ struct Machine {
         core = std::make_unique<ComponentLogic>(settings);
         op = std::make_unique<test::RandomOperation>(settings, seed);
     }
+    // The slowest update since the last report (the servo thread's work: planning on acceptance,
+    // replanning for overrides and holds), on the wall clock, which a shared machine's preemption
+    // also lengthens (this thread's CPU clock is a system call: it doubled the soak's time). A
+    // figure to watch, not a bound.
+    std::int64_t worst_ns = 0, slow = 0;  // slow: updates over 1 ms
     bool run(std::int64_t ticks) {
         for (std::int64_t k = 0; k < ticks; ++k) {
             op->before_tick(ring);
+            const std::int64_t t0 = bench::wall_ns();
             core->update(op->inputs(), ring.source(), out);
+            const std::int64_t ns = bench::wall_ns() - t0;
+            worst_ns = std::max(worst_ns, ns);
+            slow += ns > 1000000;
             op->after_tick(out, ring);
         }
         return op->ok();
@@ -91,8 +103,9 @@ int main(int argc, char** argv) {
     const auto begin = std::chrono::steady_clock::now();
     std::printf("firtp_soak: %.3g ticks (%.1f h of motion at 1 kHz), seed %llu, machines alternate every %.3g ticks\n",
                 ticks, ticks / 3.6e6, static_cast<unsigned long long>(seed), segment);
-    std::printf("%12s %9s %9s %8s %7s %7s %7s %7s %10s %10s %9s %9s\n", "ticks", "blocks", "completed", "aborted",
-                "disabl", "braked", "faults", "repeats", "end err mm", "|v|,|a|/lim", "RSS KiB", "ticks/s");
+    std::printf("%12s %9s %9s %8s %7s %7s %7s %7s %10s %10s %9s %9s %9s %6s\n", "ticks", "blocks", "completed", "aborted",
+                "disabl", "braked", "faults", "repeats", "end err mm", "|v|,|a|/lim", "RSS KiB", "ticks/s", "worst us",
+                ">1 ms");
     long rss_first = -1, rss_max = 0;
     std::int64_t done = 0, next_report = static_cast<std::int64_t>(report);
     bool ok = true;
@@ -110,12 +123,15 @@ int main(int argc, char** argv) {
             if (rss_first < 0) rss_first = rss;
             rss_max = std::max(rss_max, rss);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-            std::printf("%12lld %9lld %9lld %8lld %7lld %7lld %7lld %7lld %10.2g %10.6f %9ld %9.3g\n",
+            std::int64_t worst_ns = 0, slow = 0;
+            for (Machine& m : machines) { worst_ns = std::max(worst_ns, m.worst_ns); slow += m.slow; m.worst_ns = 0; m.slow = 0; }
+            std::printf("%12lld %9lld %9lld %8lld %7lld %7lld %7lld %7lld %10.2g %10.6f %9ld %9.3g %9.0f %6lld\n",
                         static_cast<long long>(done), static_cast<long long>(total.blocks),
                         static_cast<long long>(total.completed), static_cast<long long>(total.aborted),
                         static_cast<long long>(total.disabled), static_cast<long long>(total.braked),
                         static_cast<long long>(total.faulted), static_cast<long long>(total.repeats),
-                        total.worst_end_error, total.worst_limit_ratio, rss, static_cast<double>(done) / seconds);
+                        total.worst_end_error, total.worst_limit_ratio, rss, static_cast<double>(done) / seconds,
+                        1e-3 * static_cast<double>(worst_ns), static_cast<long long>(slow));
             std::fflush(stdout);
         }
     }
