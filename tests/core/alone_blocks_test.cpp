@@ -1,6 +1,7 @@
 // Short blocks between two stops (reversals, G61): each is planned alone, with the steps that make
 // it fastest, not with the tolerance's dense regime (which no corner there needs). Measured on the
 // samples: cycle time against the tolerance, limits, end.
+#include "support/case_ratios.hpp"
 #include "support/limits.hpp"
 #include "support/reference.hpp"
 
@@ -55,4 +56,43 @@ TEST(AloneBlocks, ALooserToleranceNeverSlowsShortBlocksBetweenReversals) {
         previous = t.cycle_time;
     }
     EXPECT_LT(previous, 1.55);  // 0.1 mm: 1.538 s (1.850 s before)
+}
+
+// A 0.05 mm G61 block after a blended corner, on an axis whose T2 = A / J is 93 ms
+// (firtp_cliffs, seed 7 program 260). Estimated sparse, its corner's T2 counted in full at its
+// stop, though that stop is sized to itself; the dense estimate then won once the tolerance was a
+// quarter larger, and the block crawled at 0.48 mm/s behind the tolerance-free regime's stop:
+// 0.072 -> 0.250 s (+245 %). Now both tolerances plan sparse, the larger no slower.
+TEST(AloneBlocks, AShortG61BlockAfterACornerIsNotSlowedByALooserTolerance) {
+    PlannerParameters p;
+    p.period = 0.00025;
+    p.max_rate = 2.0;
+    p.limits.axes = 4;
+    p.limits.axis[0] = {259.631, 1108.84, 11861.9};
+    p.limits.axis[1] = {72.2245, 23590.3, 674296.0};
+    p.limits.axis[2] = {64.9455, 19552.2, 3.94466e6};
+    p.limits.axis[3] = {278.827, 18140.9, 5.19179e6};
+    const double to[2][4] = {{-0.0052722174838535562, -0.037159791094068972, 0.016300260478382792, 0.0051131271461714936},
+                             {-0.011525929669896394, 0.0096713199542215397, 0.02894524857732406, 0.0069531847579393435}};
+    double cycle[2] = {0.0, 0.0};
+    for (const int looser : {0, 1}) {
+        const double epsilon = 0.0112022 * (looser ? 1.25 : 1.0);
+        SCOPED_TRACE("tolerance " + std::to_string(epsilon));
+        std::vector<Block> blocks(2);
+        for (int k = 0; k < 2; ++k) {
+            for (int a = 0; a < 4; ++a) blocks[k].target[a] = to[k][a];
+            blocks[k].feed = k == 0 ? 138.984 : 24.9955;
+            blocks[k].tolerance = epsilon;
+            blocks[k].line = k + 1;
+        }
+        blocks[1].termination = Termination::exact_stop;
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+        const test::CaseRatios r = test::case_ratios(p, blocks, t);
+        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+        cycle[looser] = t.cycle_time;
+        std::printf("tolerance %.4f mm: cycle %.5f s, corner %.3f mm/s (%s)\n", epsilon, t.cycle_time, t.corners.at(0).speed_in,
+                    describe(t.corners.at(0).bound));
+    }
+    EXPECT_LE(cycle[1], cycle[0] + p.period);
+    EXPECT_LT(cycle[1], 0.08);  // 0.0665 s (0.2495 s before)
 }

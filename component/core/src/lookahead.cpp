@@ -259,19 +259,28 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const bool entry = i > 0 && !entry_is_stop(i), exit = !exit_is_stop(i);
     const double in = entry ? std::min(seg(i - 1).tight_cap, s.feed_max) : 0.0;
     const double out = exit ? std::min(s.tight_cap, s.feed_max) : 0.0;
-    double corners = s.feed_max;
-    if (rules_.t2 > 0.0) corners = std::min(corners, length / rules_.t2);
-    if (entry) corners = std::min(corners, in);
-    if (exit) corners = std::min(corners, out);
     const double alpha = box(s.u, sparse_);  // 1 / the acceleration along u
-    if (!(alpha > 0.0)) return std::max(corners, s.feed_max);
     // v^2 changes by 2 L / alpha at most over the block: the higher end comes down to what it allows.
-    const double reach = 2.0 * length / alpha;
+    const double reach = alpha > 0.0 ? 2.0 * length / alpha : infinity;
     const double v0 = std::min(in, std::sqrt(out * out + reach)), v1 = std::min(out, std::sqrt(v0 * v0 + reach));
     const double peak = std::min(s.feed_max, std::sqrt(0.5 * (reach + v0 * v0 + v1 * v1)));
+    // The jerk stage each end's step adds beyond its box: T2 at the entry; at the exit too, unless
+    // it is a stop sized to itself, from the peak (far below T2 where the peak is slow: seed 7
+    // program 260, a 0.05 mm G61 block on an axis with T2 = 93 ms, estimated at T2 and classified
+    // dense: +245 % with every tolerance a quarter larger). (The same at a sized start made short
+    // blocks after reversals dense at one tolerance and not at the next: AloneBlocks.*.)
+    double exit_jerk = rules_.t2;
+    if (!exit && sized_ && !s.hold_split && !s.hold_end && peak > 0.0 && std::isfinite(peak))
+        exit_jerk = std::min(rules_.t2, std::max(0.0, sized_kernel(peak, alpha, s.u_jerk).width() - peak * alpha));
+    const double jerk_time = 0.5 * (rules_.t2 + exit_jerk);
+    double corners = s.feed_max;
+    if (jerk_time > 0.0) corners = std::min(corners, length / jerk_time);
+    if (entry) corners = std::min(corners, in);
+    if (exit) corners = std::min(corners, out);
+    if (!(alpha > 0.0)) return std::max(corners, s.feed_max);
     const double ramping = (2.0 * peak - v0 - v1) * alpha;
     const double cruise = std::max(0.0, length - 0.5 * alpha * (2.0 * peak * peak - v0 * v0 - v1 * v1)) / peak;
-    const double ramps = length / (ramping + cruise + rules_.t2);
+    const double ramps = length / (ramping + cruise + jerk_time);
     return std::max(corners, std::min(ramps, s.feed_max));
 }
 
