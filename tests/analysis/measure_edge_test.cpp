@@ -12,11 +12,10 @@
 namespace firtp {
 namespace {
 
+using test::sample_period;
 using test::append_line;
 using test::axes;
 using test::timed;
-
-constexpr double period = 1e-3;
 
 // Samples exactly on the polyline, every programmed point included.
 std::vector<AxisVector> on_polyline(const std::vector<AxisVector>& points, int steps) {
@@ -28,7 +27,7 @@ std::vector<AxisVector> on_polyline(const std::vector<AxisVector>& points, int s
 
 TEST(MeasureEdge, FollowingThePolylineGivesNoError) {
     const std::vector<AxisVector> points{axes(0, 0, 0), axes(3, 1, 0), axes(3, 4, 2), axes(-1, 4, 2), axes(0, 0, 0)};
-    const Measured m = measure(timed(on_polyline(points, 37), period), points, period);
+    const Measured m = measure(timed(on_polyline(points, 37), sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 3u);
     for (double e : m.corner_errors) EXPECT_LT(e, 1e-12);
     EXPECT_LT(m.max_contour_error, 1e-12);
@@ -38,7 +37,7 @@ TEST(MeasureEdge, FollowingThePolylineGivesNoError) {
 TEST(MeasureEdge, OffsetFromPolylineIsTheContourError) {
     // A straight path 0.25 to the side of a straight program.
     const std::vector<AxisVector> points{axes(0, 0), axes(10, 0)};
-    const Measured m = measure(timed(on_polyline({axes(0, 0.25), axes(10, 0.25)}, 100), period), points, period);
+    const Measured m = measure(timed(on_polyline({axes(0, 0.25), axes(10, 0.25)}, 100), sample_period), points, sample_period);
     EXPECT_TRUE(m.corner_errors.empty());
     EXPECT_NEAR(m.max_contour_error, 0.25, 1e-12);
     EXPECT_EQ(m.max_corner_error, 0.0);
@@ -59,33 +58,33 @@ TEST(MeasureEdge, AnAxisThatMovesLateCounts) {
     append_line(path, axes(9), cut, 10);
     append_line(path, cut, last, 30);
     path.push_back(last);
-    const Measured m = measure(timed(path, period), points, period);
+    const Measured m = measure(timed(path, sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
     EXPECT_NEAR(m.corner_errors[0], std::sqrt(0.5), 1e-12);  // the corner from the chord (9, w 0) -> (10, w 1)
     EXPECT_NEAR(m.max_contour_error, 0.5, 1e-12);  // the chord's middle, (9.5, w 0.5)
-    const Measured off = measure(timed({axes(0), axes(5), corner, last}, period), points, period);
+    const Measured off = measure(timed({axes(0), axes(5), corner, last}, sample_period), points, sample_period);
     EXPECT_NEAR(off.max_contour_error, 0.3, 1e-12);  // V alone is off the path, at the end
 }
 
 TEST(MeasureEdge, NonFiniteSamples) {
     const std::vector<AxisVector> points{axes(0), axes(1)};
-    auto samples = timed(on_polyline(points, 10), period);
-    EXPECT_TRUE(measure(samples, points, period).finite);
+    auto samples = timed(on_polyline(points, 10), sample_period);
+    EXPECT_TRUE(measure(samples, points, sample_period).finite);
     samples[4].position(7) = std::numeric_limits<double>::quiet_NaN();
-    const Measured with_nan = measure(samples, points, period);
+    const Measured with_nan = measure(samples, points, sample_period);
     EXPECT_FALSE(with_nan.finite);
     EXPECT_EQ(with_nan.max_contour_error, 0.0);  // the other samples are on the path
     samples[4].position(7) = 0.0;
     samples[9].position(0) = std::numeric_limits<double>::infinity();
-    EXPECT_FALSE(measure(samples, points, period).finite);
+    EXPECT_FALSE(measure(samples, points, sample_period).finite);
 }
 
 TEST(MeasureEdge, RepeatedPointsAreIgnored) {
     const double r = 0.5;
-    const auto samples = timed(test::filleted({axes(-10, 0), axes(0, 0), axes(0, 10)}, {r}, 100, 500), period);
+    const auto samples = timed(test::filleted({axes(-10, 0), axes(0, 0), axes(0, 10)}, {r}, 100, 500), sample_period);
     const std::vector<AxisVector> points{axes(-10, 0), axes(-10, 0), axes(0, 0), axes(0, 0),
                                          axes(0, 0),   axes(0, 10),  axes(0, 10)};
-    const Measured m = measure(samples, points, period);
+    const Measured m = measure(samples, points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
     EXPECT_NEAR(m.corner_errors[0], r * (std::numbers::sqrt2 - 1.0), 1e-9);
     EXPECT_NEAR(m.max_contour_error, r * (1.0 - 1.0 / std::numbers::sqrt2), 1e-9);
@@ -93,7 +92,7 @@ TEST(MeasureEdge, RepeatedPointsAreIgnored) {
 
 TEST(MeasureEdge, FewSamples) {
     const std::vector<AxisVector> points{axes(0), axes(5), axes(5, 5)};
-    const Measured none = measure({}, points, period);
+    const Measured none = measure({}, points, sample_period);
     EXPECT_EQ(none.cycle_time, 0.0);
     EXPECT_TRUE(none.end_position.isZero());
     EXPECT_TRUE(none.corner_errors.empty());
@@ -101,7 +100,7 @@ TEST(MeasureEdge, FewSamples) {
     AxisState one;
     one.time = 0.5;
     one.position = axes(1, 2, 3);
-    const Measured single = measure(std::vector<AxisState>{one}, points, period);
+    const Measured single = measure(std::vector<AxisState>{one}, points, sample_period);
     EXPECT_EQ(single.cycle_time, 0.5);
     EXPECT_EQ(single.end_position, axes(1, 2, 3));
     EXPECT_EQ(single.max_contour_error, 0.0);
@@ -112,7 +111,7 @@ TEST(MeasureEdge, FewSamples) {
 
 TEST(MeasureEdge, OvershootPastTheEndIsMeasuredToTheEndPoint) {
     const std::vector<AxisVector> points{axes(0, 0), axes(10, 0)};
-    const Measured m = measure(timed(on_polyline({axes(0, 0), axes(12, 0)}, 120), period), points, period);
+    const Measured m = measure(timed(on_polyline({axes(0, 0), axes(12, 0)}, 120), sample_period), points, sample_period);
     EXPECT_NEAR(m.max_contour_error, 2.0, 1e-12);
 }
 
@@ -120,7 +119,7 @@ TEST(MeasureEdge, LongProgram) {
     // 10^4 zigzag segments, 10^5 samples on them.
     std::vector<AxisVector> points;
     for (int k = 0; k <= 10000; ++k) points.push_back(axes(0.1 * k, (k % 2) * 0.05, (k % 3) * 0.02));
-    const Measured m = measure(timed(on_polyline(points, 10), period), points, period);
+    const Measured m = measure(timed(on_polyline(points, 10), sample_period), points, sample_period);
     EXPECT_EQ(m.corner_errors.size(), 9999u);
     EXPECT_LT(m.max_corner_error, 1e-9);
     EXPECT_LT(m.max_contour_error, 1e-9);

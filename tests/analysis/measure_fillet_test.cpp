@@ -11,18 +11,18 @@
 namespace firtp {
 namespace {
 
+using test::sample_period;
 using test::axes;
 using test::filleted;
 using test::timed;
 
-constexpr double period = 1e-3;
 const double sqrt2 = std::numbers::sqrt2;
 
 TEST(MeasureFillet, DenseSamplesGiveExactErrorsAtRightAngle) {
     const std::vector<AxisVector> points{axes(-10, 0), axes(0, 0), axes(0, 10)};
     const double r = 0.5;
-    const auto samples = timed(filleted(points, {r}, 200, 1000), period);
-    const Measured m = measure(samples, points, period);
+    const auto samples = timed(filleted(points, {r}, 200, 1000), sample_period);
+    const Measured m = measure(samples, points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
     EXPECT_NEAR(m.corner_errors[0], r * (sqrt2 - 1.0), 1e-9);
     EXPECT_NEAR(m.max_corner_error, r * (sqrt2 - 1.0), 1e-9);
@@ -35,8 +35,8 @@ TEST(MeasureFillet, CoarseSamplesStayWithinSamplingBound) {
     const double r = 0.5;
     const double turn = std::numbers::pi / 2.0;
     const int arc_steps = 3;  // no sample at the arc's middle
-    const auto samples = timed(filleted(points, {r}, 5, arc_steps), period);
-    const Measured m = measure(samples, points, period);
+    const auto samples = timed(filleted(points, {r}, 5, arc_steps), sample_period);
+    const Measured m = measure(samples, points, sample_period);
 
     // Nearest sample is half a step away from the arc's middle.
     const double half_step = turn / arc_steps / 2.0;
@@ -65,8 +65,8 @@ TEST(MeasureFillet, UsesAllNineAxes) {
     const std::vector<AxisVector> points{origin - 10.0 * e1, origin,
                                          origin + 10.0 * (0.5 * e1 + std::sqrt(3.0) / 2.0 * e2)};
     const double r = 2.0;
-    const auto samples = timed(filleted(points, {r}, 100, 2000), period);
-    const Measured m = measure(samples, points, period);
+    const auto samples = timed(filleted(points, {r}, 100, 2000), sample_period);
+    const Measured m = measure(samples, points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 1u);
     EXPECT_NEAR(m.corner_errors[0], r * (2.0 / std::sqrt(3.0) - 1.0), 1e-9);
     EXPECT_NEAR(m.max_contour_error, r * (1.0 - std::sqrt(3.0) / 2.0), 1e-9);
@@ -77,7 +77,7 @@ TEST(MeasureFillet, DiamondCornersAreMeasuredSeparately) {
     const AxisVector start = axes(5, -5);
     const std::vector<AxisVector> points{start, axes(10, 0), axes(0, 10), axes(-10, 0), axes(0, -10), start};
     const std::vector<double> radii{0.4, 0.1, 0.3, 0.2};
-    const Measured m = measure(timed(filleted(points, radii, 300, 400), period), points, period);
+    const Measured m = measure(timed(filleted(points, radii, 300, 400), sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 4u);
     for (std::size_t j = 0; j < radii.size(); ++j) EXPECT_NEAR(m.corner_errors[j], radii[j] * (sqrt2 - 1.0), 1e-9) << j;
     EXPECT_NEAR(m.max_corner_error, 0.4 * (sqrt2 - 1.0), 1e-9);
@@ -87,7 +87,7 @@ TEST(MeasureFillet, DiamondCornersAreMeasuredSeparately) {
 TEST(MeasureFillet, DiamondFromVertexHasNoCornerAtStart) {
     const std::vector<AxisVector> points{axes(10, 0), axes(0, 10), axes(-10, 0), axes(0, -10), axes(10, 0)};
     const std::vector<double> radii{0.3, 0.1, 0.2};
-    const Measured m = measure(timed(filleted(points, radii, 300, 400), period), points, period);
+    const Measured m = measure(timed(filleted(points, radii, 300, 400), sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 3u);
     for (std::size_t j = 0; j < radii.size(); ++j) EXPECT_NEAR(m.corner_errors[j], radii[j] * (sqrt2 - 1.0), 1e-9) << j;
 }
@@ -98,7 +98,7 @@ TEST(MeasureFillet, RevisitedCornersAreMeasuredPerVisit) {
     const AxisVector v0 = axes(10, 0), v1 = axes(0, 10), v2 = axes(-10, 0), v3 = axes(0, -10);
     const std::vector<AxisVector> points{v0, v1, v2, v3, v0, v1, v2, v3, v0};
     const std::vector<double> radii{0.5, 0.1, 0.6, 0.3, 0.2, 0.7, 0.4};
-    const Measured m = measure(timed(filleted(points, radii, 300, 400), period), points, period);
+    const Measured m = measure(timed(filleted(points, radii, 300, 400), sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 7u);
     for (std::size_t j = 0; j < radii.size(); ++j) EXPECT_NEAR(m.corner_errors[j], radii[j] * (sqrt2 - 1.0), 1e-9) << j;
     EXPECT_NEAR(m.max_contour_error, 0.7 * (1.0 - 1.0 / sqrt2), 1e-9);

@@ -17,9 +17,8 @@
 namespace firtp {
 namespace {
 
+using test::sample_period;
 using test::axes;
-
-constexpr double period = 1e-3;
 
 void expect_same(const Measured& a, const Measured& b, const std::string& what) {
     SCOPED_TRACE(what);
@@ -74,7 +73,7 @@ std::vector<AxisState> random_samples(std::mt19937& rng, const std::vector<AxisV
         along += step;
     }
     path.push_back(points.back());
-    return test::timed(path, period);
+    return test::timed(path, sample_period);
 }
 
 TEST(MeasureStream, EqualsTheBatchMeasurementOnRandomPaths) {
@@ -84,7 +83,7 @@ TEST(MeasureStream, EqualsTheBatchMeasurementOnRandomPaths) {
         const std::vector<AxisVector> points = random_points(rng, count);
         const double stray = (run % 3) * 0.02;
         const std::vector<AxisState> samples = random_samples(rng, points, stray, run % 7 == 0);
-        expect_same(measure(samples, points, period), reference::measure_batch(samples, points, period),
+        expect_same(measure(samples, points, sample_period), reference::measure_batch(samples, points, sample_period),
                     "run " + std::to_string(run));
         if (HasFatalFailure()) return;
     }
@@ -97,8 +96,8 @@ TEST(MeasureStream, EqualsTheBatchMeasurementOnFewSamplesAndPoints) {
             std::vector<AxisVector> points = count ? random_points(rng, count) : std::vector<AxisVector>{};
             std::vector<AxisVector> positions;
             for (std::size_t i = 0; i < n; ++i) positions.push_back(axes(0.3 * static_cast<double>(i), 0.1));
-            const auto samples = test::timed(positions, period);
-            expect_same(measure(samples, points, period), reference::measure_batch(samples, points, period),
+            const auto samples = test::timed(positions, sample_period);
+            expect_same(measure(samples, points, sample_period), reference::measure_batch(samples, points, sample_period),
                         "n " + std::to_string(n) + " points " + std::to_string(count));
         }
 }
@@ -120,7 +119,7 @@ TEST(MeasureStream, EqualsTheBatchMeasurementOnPlannedDensePaths) {
         points.push_back(b.target);
     }
     const Trajectory t = plan_trajectory(parameters, AxisVector::Zero(), blocks);
-    expect_same(measure(t.samples, points, period), reference::measure_batch(t.samples, points, period), "planned");
+    expect_same(measure(t.samples, points, sample_period), reference::measure_batch(t.samples, points, sample_period), "planned");
 }
 
 TEST(MeasureStream, ToldEachCornerOnceInOrder) {
@@ -128,7 +127,7 @@ TEST(MeasureStream, ToldEachCornerOnceInOrder) {
     const std::vector<AxisVector> points = random_points(rng, 200);
     const std::vector<AxisState> samples = random_samples(rng, points, 0.01, false);
     std::vector<double> told;
-    MeasureStream stream(points, period, [&](std::size_t i, double e) {
+    MeasureStream stream(points, sample_period, [&](std::size_t i, double e) {
         EXPECT_EQ(i, told.size());
         told.push_back(e);
     });

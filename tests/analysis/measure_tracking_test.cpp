@@ -10,11 +10,10 @@
 namespace firtp {
 namespace {
 
+using test::sample_period;
 using test::append_line;
 using test::axes;
 using test::timed;
-
-constexpr double period = 1e-3;
 
 TEST(MeasureTracking, CuttingAcrossASpikeDoesNotStall) {
     // The program makes a 5 mm spike; the tool goes straight on along X and then turns up at 20.
@@ -23,7 +22,7 @@ TEST(MeasureTracking, CuttingAcrossASpikeDoesNotStall) {
     append_line(path, axes(0, 0), axes(20, 0), 400);  // 0.05 apart: one sample inside the spike's base
     append_line(path, axes(20, 0), axes(20, 10), 200);
     path.push_back(axes(20, 10));
-    const Measured m = measure(timed(path, period), points, period);
+    const Measured m = measure(timed(path, sample_period), points, sample_period);
 
     // Only x = 10.05 leaves the program: 0.05 from X = 10, slightly less from the spike's far side.
     EXPECT_NEAR(m.max_contour_error, 5.0 * 0.05 / std::sqrt(25.01), 1e-9);
@@ -46,7 +45,7 @@ TEST(MeasureTracking, SampleFallingBackIsMeasuredToTheEarlierSegment) {
     path.push_back(axes(9.5, -0.3));
     append_line(path, axes(10, 0.5), axes(10, 10), 100);
     path.push_back(axes(10, 10));
-    const Measured m = measure(timed(path, period), points, period);
+    const Measured m = measure(timed(path, sample_period), points, sample_period);
     EXPECT_NEAR(m.max_contour_error, 0.3, 1e-12);
 }
 
@@ -57,7 +56,7 @@ TEST(MeasureTracking, UnreachedCornersUseTheLastSample) {
     append_line(path, axes(0, 0), axes(10, 0), 50);
     append_line(path, axes(10, 0), axes(10, 4), 20);
     path.push_back(axes(10, 4));
-    const Measured m = measure(timed(path, period), points, period);
+    const Measured m = measure(timed(path, sample_period), points, sample_period);
     ASSERT_EQ(m.corner_errors.size(), 3u);
     EXPECT_LT(m.corner_errors[0], 1e-12);
     EXPECT_NEAR(m.corner_errors[1], 6.0, 1e-12);

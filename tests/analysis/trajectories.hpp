@@ -10,6 +10,8 @@
 
 namespace firtp::test {
 
+inline constexpr double sample_period = 1e-3;  // the measure tests' period, s
+
 inline AxisVector axes(double x, double y = 0.0, double z = 0.0) {
     AxisVector v = AxisVector::Zero();
     v << x, y, z, 0, 0, 0, 0, 0, 0;
