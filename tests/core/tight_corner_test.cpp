@@ -106,15 +106,14 @@ TEST(TightCorner, BetweenLongFastBlocksTheCornerKeepsTheMachinesRegime) {
     }
 }
 
-// Known gap, disabled: the choice should be made for the rate the program runs at. A machine that
-// allows a feed override of 200 % plans its corners to hold the limits there, but blend_loss
-// judges a corner's regime at the blocks' speeds at 200 %. A gentle chain of 0.91 mm blocks into a
-// 54 degree turn onto a 58 mm rapid (firtp_cliffs, seed 3 program 81) keeps the machine's regime
-// at 5.0 mm/s and takes 1.137 s; in its tolerance's regime at 8.6 mm/s, 1.057 s, as planned
-// without the override's headroom. Judging at the 100 % feeds passes this test, but it made
-// tests/soak's planning 2.4-4x slower (more corners in the tolerance's regime, which costs more to
-// plan): docs/BENCHMARKS.md, "A corner judged at the speeds the program runs at".
-TEST(TightCorner, DISABLED_TheRegimeIsChosenForTheRateTheProgramRunsAt) {
+// The choice is made for the rate the program runs at. A machine that allows a feed override of
+// 200 % plans its corners to hold the limits there, but blend_loss judged a corner's regime at the
+// blocks' speeds at 200 %: a gentle chain of 0.91 mm blocks into a 54 degree turn onto a 58 mm
+// rapid (firtp_cliffs, seed 3 program 81) kept the machine's regime at 5.0 mm/s and took 1.137 s;
+// in its tolerance's regime at 8.6 mm/s, 1.057 s, as planned without the override's headroom.
+// (Disabled once: it made tests/soak 2.4-4x slower, which was a failed override retried from
+// scratch at every tick; docs/BENCHMARKS.md, "A change tried again from where it stopped".)
+TEST(TightCorner, TheRegimeIsChosenForTheRateTheProgramRunsAt) {
     PlannerParameters p;
     p.period = 0.0005;
     p.limits.axes = 3;

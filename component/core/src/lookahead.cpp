@@ -414,29 +414,32 @@ Lookahead::Regime Lookahead::ramp_sharing(const Regime& corner) const {
 }
 
 // A corner between sparse blocks takes its tolerance's regime (`tight`, its turn's box and cap
-// there; `machine` likewise in the machine's) where that loses less time by estimate (blend_loss).
-// A faster corner alone does not pay: on a 90 degree corner between 30 mm blocks at 200 mm/s
-// (0.002 mm) the tolerance's regime passed at 1.33 mm/s instead of 0.23 and took 0.652 s instead
-// of 0.480, its ramps at 780 mm/s^2.
+// there; `machine` likewise in the machine's) where that loses no more time by estimate
+// (blend_loss; on a tie the faster corner, which a raised override may use). A faster corner
+// alone does not pay: on a 90 degree corner between 30 mm blocks at 200 mm/s (0.002 mm) the
+// tolerance's regime passed at 1.33 mm/s instead of 0.23 and took 0.652 s instead of 0.480, its
+// ramps at 780 mm/s^2.
 bool Lookahead::tight_pays(std::size_t i, const Regime& tight, double tight_alpha, double cap, const Regime& machine,
                            double machine_alpha, double machine_cap) const {
-    return cap > machine_cap && blend_loss(i, tight, tight_alpha, cap) < blend_loss(i, machine, machine_alpha, machine_cap);
+    return cap > machine_cap && blend_loss(i, tight, tight_alpha, cap) <= blend_loss(i, machine, machine_alpha, machine_cap);
 }
 
 // Passing corner i at v in `regime` (its turn's box turn_alpha), by estimate: the time lost against
-// the speeds f beside it (each block's feed, or the peak its length allows). Each ramp between f and
-// v loses its kernel's width times (f - v) / 2 f; the ramps' kernels stay apart by the turn's
-// reserves and jerk gaps (profile_legs), run at v. On the blocks' whole lengths: the decision does
-// not change while the first one runs. (Measured on a 90 degree corner between 20 mm blocks at
-// 100 mm/s, 0.05-0.5 mm: within 0.6 ms of the samples' cycle time.)
+// the speeds f beside it (each block's feed at the rate it runs, target(), or the peak its length
+// allows; at the highest override's feeds a corner at 200 % was judged for speeds it never ran).
+// Each ramp between f and v loses its kernel's width times (f - v) / 2 f; the ramps' kernels stay
+// apart by the turn's reserves and jerk gaps (profile_legs), run at v. On the blocks' whole
+// lengths: the decision does not change while the first one runs. (Measured on a 90 degree corner
+// between 20 mm blocks at 100 mm/s, 0.05-0.5 mm: within 0.6 ms of the samples' cycle time.)
 double Lookahead::blend_loss(std::size_t i, const Regime& regime, double turn_alpha, double v) const {
     const Segment& s = seg(i);
     const Segment& n = seg(i + 1);
     const double t2 = regime.t2, tb = v * turn_alpha, reserve = 0.5 * std::max(0.0, t2 - tb);
     double loss = 0.0, slowest = infinity;
-    for (const Segment* b : {&s, &n}) {
+    for (std::size_t k : {i, i + 1}) {
+        const Segment* b = &seg(k);
         const double alpha = box(b->u, regime);
-        const double f = std::min(b->feed_max, std::sqrt(v * v + b->length / alpha));
+        const double f = std::min(target(k), std::sqrt(v * v + b->length / alpha));
         slowest = std::min(slowest, f);
         if (v < f) loss += ((f - v) * alpha + t2) * (f - v) / (2.0 * f);
     }
@@ -452,7 +455,7 @@ double Lookahead::stop_loss(std::size_t i) const {
     double loss = parameters_.period;
     for (std::size_t k : {i, i + 1}) {
         const Segment& b = seg(k);
-        const double f = std::min(b.feed_max, std::sqrt(b.length / b.alpha));
+        const double f = std::min(target(k), std::sqrt(b.length / b.alpha));
         loss += 0.5 * sized_kernel(f, b.alpha, b.u_jerk).width();
     }
     return loss;
