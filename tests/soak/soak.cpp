@@ -124,7 +124,11 @@ int main(int argc, char** argv) {
             rss_max = std::max(rss_max, rss);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
             std::int64_t worst_ns = 0, slow = 0;
-            for (Machine& m : machines) { worst_ns = std::max(worst_ns, m.worst_ns); slow += m.slow; m.worst_ns = 0; m.slow = 0; }
+            for (Machine& m : machines) {  // since the last report
+                worst_ns = std::max(worst_ns, m.worst_ns);
+                slow += m.slow;
+                m.worst_ns = m.slow = 0;
+            }
             std::printf("%12lld %9lld %9lld %8lld %7lld %7lld %7lld %7lld %10.2g %10.6f %9ld %9.3g %9.0f %6lld\n",
                         static_cast<long long>(done), static_cast<long long>(total.blocks),
                         static_cast<long long>(total.completed), static_cast<long long>(total.aborted),

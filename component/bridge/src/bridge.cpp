@@ -367,10 +367,11 @@ void Bridge::forward_states() {
         const std::int64_t tick =
             last_tick_ < 0 ? tick32 : last_tick_ + static_cast<std::uint32_t>(tick32 - static_cast<std::uint32_t>(last_tick_));
         if (last_tick_ >= 0 && tick != last_tick_ + 1) {
-            lost_states_ += tick - last_tick_ - 1;  // the total, as firtp.state-overruns counts them
+            const std::int64_t gap = tick - last_tick_ - 1;
+            lost_states_ += gap;  // the total, as firtp.state-overruns counts them
             report(firtp_lcm::status_t::ERROR_LOST_STATE,
-                   std::to_string(lost_states_) + " axis states lost, the latest " + std::to_string(tick - last_tick_ - 1) +
-                       " before tick " + std::to_string(tick) + " (the bridge fell behind the servo thread)");
+                   std::to_string(lost_states_) + " axis states lost, the latest " + std::to_string(gap) + " before tick " +
+                       std::to_string(tick) + " (the bridge fell behind the servo thread)");
         }
         last_tick_ = tick;
         const stream::Progress progress = stream::unpack_progress(record);
