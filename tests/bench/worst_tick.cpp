@@ -13,13 +13,13 @@
 // ("floor") and is included in every figure. At the end the queue drains and the output must rest
 // exactly (bit for bit) on the last command; exit status 1 otherwise.
 #include "bench_stats.hpp"
+#include "random_moves.hpp"
 
 #include <firtp/planner.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <random>
 #include <string>
 
 using namespace firtp;
@@ -34,40 +34,6 @@ FilterTimes chain_with(int stages) {  // as firtp_bench (tests/bench/bench.cpp)
     for (int i = 0; i < stages; ++i) f.T[i] = times[i];
     return f;
 }
-
-class RandomMoves {
-public:
-    RandomMoves(int axes, std::uint64_t seed) : axes_(axes), rng_(seed) {}
-
-    Block next() {
-        Block b;
-        AxisVector d = AxisVector::Zero();
-        for (int a = 0; a < axes_; ++a) d[a] = unit_(rng_);
-        if (d.norm() < 1e-6) d[0] = 1.0;
-        const double length = std::exp(log_length_(rng_));
-        at_ += d.normalized() * length;
-        // Stay inside a 1 m box: reflect the move's direction back towards the origin.
-        for (int a = 0; a < axes_; ++a)
-            if (std::abs(at_[a]) > 500.0) at_[a] = std::copysign(500.0, at_[a]) - (at_[a] - std::copysign(500.0, at_[a]));
-        b.target = at_;
-        b.feed = feed_(rng_);
-        b.tolerance = tolerance_(rng_);
-        b.termination = ++count_ % 50 == 0 ? Termination::exact_stop : Termination::blend;
-        b.line = count_;
-        return b;
-    }
-    std::int64_t count() const { return count_; }
-
-private:
-    int axes_;
-    std::mt19937_64 rng_;
-    std::uniform_real_distribution<double> unit_{-1.0, 1.0};
-    std::uniform_real_distribution<double> log_length_{std::log(0.05), std::log(40.0)};
-    std::uniform_real_distribution<double> feed_{50.0, 300.0};
-    std::uniform_real_distribution<double> tolerance_{0.01, 0.1};
-    AxisVector at_ = AxisVector::Zero();
-    std::int64_t count_ = 0;
-};
 
 }  // namespace
 
