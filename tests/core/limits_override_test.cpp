@@ -10,6 +10,7 @@
 //   more step brings the axes from the highest speed to rest.
 // Seeded; FIRTP_RANDOM_SEED shifts the seeds and FIRTP_RANDOM_SCALE soaks.
 #include "support/random_machine.hpp"
+#include "support/sampled_limits.hpp"
 
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
@@ -111,24 +112,8 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
             ASSERT_FALSE(r.samples.empty());
             const Measured m = measure(r.samples, r.points, p.period);
             ASSERT_TRUE(m.finite);
-            for (int a = 0; a < p.limits.axes; ++a) {
-                const AxisLimits& l = p.limits.axis[a];
-                const double slack = 1.0 + 1e-6;
-                for (const AxisState& s : r.samples) {
-                    ASSERT_LE(std::abs(s.velocity[a]), l.max_velocity * slack) << "axis " << a << " at " << s.time;
-                    ASSERT_LE(std::abs(s.acceleration[a]), l.max_acceleration * slack) << "axis " << a << " at " << s.time;
-                    if (jerk && l.max_jerk > 0.0) {
-                    ASSERT_LE(std::abs(s.jerk[a]), l.max_jerk * slack) << "axis " << a << " at " << s.time;
-                }
-                }
-                ASSERT_LE(m.max_velocity[a], l.max_velocity * slack) << "axis " << a;
-                ASSERT_LE(m.max_acceleration[a], l.max_acceleration * slack + test::difference_noise(r.samples, a, p.period, 2))
-                    << "axis " << a;
-                if (jerk && l.max_jerk > 0.0) {
-                    ASSERT_LE(m.max_jerk[a], l.max_jerk * slack + test::difference_noise(r.samples, a, p.period, 3)) << "axis " << a;
-                }
-                worst = std::max(worst, m.max_acceleration[a] / l.max_acceleration);
-            }
+            ASSERT_EQ(test::beyond_limits(r.samples, m, p, jerk), "");
+            for (int a = 0; a < p.limits.axes; ++a) worst = std::max(worst, m.max_acceleration[a] / p.limits.axis[a].max_acceleration);
             ASSERT_EQ(r.samples.back().velocity, AxisVector::Zero());
             const double bound = hold_time_bound(p) + 2 * p.period;
             ASSERT_LE(r.longest_stop, bound);

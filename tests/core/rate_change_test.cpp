@@ -1,0 +1,136 @@
+// Feed override changes and holds with a full queue of 256 blocks (the random suites' programs are
+// short: they rarely have more than a few dozen blocks waiting). Measured on the samples: the
+// limits, also in finite differences, every corner within its tolerance once, the end exact.
+// What such a change costs is firtp_worst_override's (tests/bench). Seeded; FIRTP_RANDOM_SEED
+// shifts the seeds and FIRTP_RANDOM_SCALE soaks.
+#include "support/random_machine.hpp"
+#include "support/sampled_limits.hpp"
+
+#include <firtp/measure.hpp>
+#include <firtp/planner.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace firtp;
+
+namespace {
+
+PlannerParameters change_machine(std::size_t queue) {
+    PlannerParameters p;
+    p.queue_capacity = queue;
+    p.max_rate = 1.5;
+    p.limits.axes = 3;
+    for (int a = 0; a < 3; ++a) p.limits.axis[a] = {300.0, 5000.0, 1e5};
+    return p;
+}
+
+// A zig-zag of 3 mm blocks turning 20 degrees either way, F 150 mm/s, G64 P0.05; every 40th an
+// exact stop.
+std::vector<Block> zig_zag_program(int blocks) {
+    std::vector<Block> program;
+    AxisVector at = AxisVector::Zero();
+    for (int i = 0; i < blocks; ++i) {
+        const double angle = (i % 2 ? 10.0 : -10.0) * M_PI / 180.0;
+        at += 3.0 * AxisVector::Unit(0) * std::cos(angle) + 3.0 * AxisVector::Unit(1) * std::sin(angle);
+        Block b;
+        b.target = at;
+        b.feed = 150.0;
+        b.tolerance = 0.05;
+        b.termination = (i + 1) % 40 == 0 ? Termination::exact_stop : Termination::blend;
+        b.line = i + 1;
+        program.push_back(b);
+    }
+    return program;
+}
+
+struct ChangedRun {
+    std::vector<AxisState> samples;
+    bool finished = false;  // at rest at the end, within 400 s
+};
+
+// Rates (tick, rate); 0 holds.
+ChangedRun run_changes(const PlannerParameters& p, const std::vector<Block>& program, const std::vector<std::pair<int, double>>& rates) {
+    Planner planner(p, AxisVector::Zero());
+    ChangedRun r;
+    std::size_t next = 0, event = 0;
+    for (int k = 0; k < static_cast<int>(400.0 / p.period); ++k) {
+        while (next < program.size() && planner.add(program[next]) == Result::ok) ++next;
+        if (next == program.size()) planner.finish();
+        if (event < rates.size() && rates[event].first == k) planner.set_rate(rates[event++].second);
+        AxisState s;
+        planner.tick(s);
+        r.samples.push_back(s);
+        if (next == program.size() && planner.idle() && event == rates.size()) {
+            r.finished = true;
+            break;
+        }
+    }
+    return r;
+}
+
+void expect_within(const ChangedRun& r, const std::vector<Block>& program, const PlannerParameters& p) {
+    std::vector<AxisVector> points{AxisVector::Zero()};
+    for (const Block& b : program) points.push_back(b.target);
+    const Measured m = measure(r.samples, points, p.period);
+    ASSERT_TRUE(r.finished);
+    ASSERT_TRUE(m.finite);
+    ASSERT_EQ(test::beyond_limits(r.samples, m, p), "");
+    ASSERT_EQ(m.corner_errors.size(), program.size() - 1);  // each corner passed once
+    for (std::size_t i = 0; i < m.corner_errors.size(); ++i)
+        EXPECT_LE(m.corner_errors[i], program[i].tolerance * (1 + 1e-6)) << "corner after line " << program[i].line;
+    EXPECT_EQ(m.end_position, program.back().target);
+    EXPECT_EQ(r.samples.back().velocity, AxisVector::Zero());
+}
+
+}  // namespace
+
+TEST(RateChange, ZigZagWithTheQueueFull) {
+    const std::vector<Block> program = zig_zag_program(600);
+    const std::vector<std::pair<int, double>> rates{{400, 1.4}, {900, 0.6}, {1500, 0.0}, {2300, 1.0}, {2600, 1.5}};
+    expect_within(run_changes(change_machine(256), program, rates), program, change_machine(256));
+}
+
+// Random machines (support/random_machine.hpp) with 256 blocks waiting: meanders of 150-400
+// blocks of 0.05-20 mm that never turn back (so the measurement can follow them), feeds of 30-600
+// mm/s, some exact stops; eight rate changes, holds among them, at random
+// ticks.
+TEST(RateChange, RandomMachinesWithManyBlocksWaiting) {
+    std::mt19937_64 rng(71 + test::random_seed_offset());
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int programs = test::random_scaled(16);
+    for (int k = 0; k < programs; ++k) {
+        PlannerParameters p = test::random_machine(rng);
+        p.queue_capacity = 256;
+        std::vector<Block> program;
+        AxisVector at = AxisVector::Zero();
+        const int n = 150 + static_cast<int>(rng() % 250);
+        const double feed = test::log_uniform(rng, 30, 600), tolerance = test::log_uniform(rng, 0.001, 0.5);
+        for (int i = 0; i < n; ++i) {
+            const double length = test::log_uniform(rng, 0.05, 20.0), heading = (unit(rng) - 0.5) * 2.4;  // within +-69 degrees of X
+            at[0] += length * std::cos(heading);
+            at[1] += length * std::sin(heading);
+            if (p.limits.axes > 2) at[2] += 0.2 * length * (unit(rng) - 0.5);
+            Block b;
+            b.target = at;
+            b.feed = rng() % 4 == 0 ? test::log_uniform(rng, 30, 600) : feed;
+            b.tolerance = tolerance;
+            b.termination = rng() % 30 == 0 ? Termination::exact_stop : Termination::blend;
+            b.line = i + 1;
+            program.push_back(b);
+        }
+        std::vector<std::pair<int, double>> rates;
+        int tick = 0;
+        for (int e = 0; e < 8; ++e) {
+            tick += 1 + static_cast<int>(unit(rng) * 0.4 / p.period);
+            rates.emplace_back(tick, unit(rng) < 0.25 ? 0.0 : p.max_rate * (0.1 + 0.9 * unit(rng)));
+        }
+        rates.emplace_back(tick + 1 + static_cast<int>(unit(rng) * 0.4 / p.period), 1.0);
+        SCOPED_TRACE("program " + std::to_string(k));
+        expect_within(run_changes(p, program, rates), program, p);
+    }
+}
