@@ -87,22 +87,14 @@ void expect_within(const ChangedRun& r, const std::vector<Block>& program, const
     EXPECT_EQ(r.samples.back().velocity, AxisVector::Zero());
 }
 
-}  // namespace
-
-TEST(RateChange, ZigZagWithTheQueueFull) {
-    const std::vector<Block> program = zig_zag_program(600);
-    const std::vector<std::pair<int, double>> rates{{400, 1.4}, {900, 0.6}, {1500, 0.0}, {2300, 1.0}, {2600, 1.5}};
-    expect_within(run_changes(change_machine(256), program, rates), program, change_machine(256));
-}
-
 // Random machines (support/random_machine.hpp) with 256 blocks waiting: meanders of 150-400
 // blocks of 0.05-20 mm that never turn back (so the measurement can follow them), feeds of 30-600
-// mm/s, some exact stops; eight rate changes, holds among them, at random
-// ticks.
-TEST(RateChange, RandomMachinesWithManyBlocksWaiting) {
-    std::mt19937_64 rng(71 + test::random_seed_offset());
+// mm/s, some exact stops; eight rate changes, holds among them, at random ticks, then 100 %.
+// `only` >= 0: that program of the sequence alone, with its first `changes` rate changes.
+void check_deep_queue(std::uint64_t seed, int count, int only = -1, std::size_t changes = 8) {
+    std::mt19937_64 rng(seed + (only >= 0 ? 0 : test::random_seed_offset()));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const int programs = test::random_scaled(16);
+    const int programs = only >= 0 ? only + 1 : test::random_scaled(count);
     for (int k = 0; k < programs; ++k) {
         PlannerParameters p = test::random_machine(rng);
         p.queue_capacity = 256;
@@ -129,8 +121,29 @@ TEST(RateChange, RandomMachinesWithManyBlocksWaiting) {
             tick += 1 + static_cast<int>(unit(rng) * 0.4 / p.period);
             rates.emplace_back(tick, unit(rng) < 0.25 ? 0.0 : p.max_rate * (0.1 + 0.9 * unit(rng)));
         }
-        rates.emplace_back(tick + 1 + static_cast<int>(unit(rng) * 0.4 / p.period), 1.0);
+        const int end = tick + 1 + static_cast<int>(unit(rng) * 0.4 / p.period);
+        if (k < only) continue;
+        rates.resize(std::min(changes, rates.size()));
+        rates.emplace_back(end, 1.0);
         SCOPED_TRACE("program " + std::to_string(k));
         expect_within(run_changes(p, program, rates), program, p);
     }
 }
+
+}  // namespace
+
+TEST(RateChange, ZigZagWithTheQueueFull) {
+    const std::vector<Block> program = zig_zag_program(600);
+    const std::vector<std::pair<int, double>> rates{{400, 1.4}, {900, 0.6}, {1500, 0.0}, {2300, 1.0}, {2600, 1.5}};
+    expect_within(run_changes(change_machine(256), program, rates), program, change_machine(256));
+}
+
+TEST(RateChange, RandomMachinesWithManyBlocksWaiting) { check_deep_queue(71, 16); }
+
+// Found at FIRTP_RANDOM_SCALE=4 with FIRTP_RANDOM_SEED=1 (program 56, 200 blocks on a 5-axis
+// machine): one override of 48.7 % at period 202 and 100 % again at period 1816. The tool then
+// crawls at about 1e-4 mm/s from line 171 on and is 96 mm short of the end after 400 s. Without
+// the change the program ends at 22.0 s. It passes at ccfb706: the crawl comes from 2ea9dda (a
+// failed change keeps the corner caps its attempts lowered), which lowers the same corners again
+// at every retry. Not mended yet (docs/STATUS.md).
+TEST(RateChange, DISABLED_AnOverrideAndBackDoesNotLeaveTheToolCrawling) { check_deep_queue(72, 0, 56, 1); }
