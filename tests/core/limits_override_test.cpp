@@ -10,6 +10,7 @@
 //   more step brings the axes from the highest speed to rest.
 // Seeded; FIRTP_RANDOM_SEED shifts the seeds and FIRTP_RANDOM_SCALE soaks.
 #include "support/random_machine.hpp"
+#include "support/rate_run.hpp"
 #include "support/sampled_limits.hpp"
 
 #include <firtp/measure.hpp>
@@ -26,51 +27,6 @@
 using namespace firtp;
 
 namespace {
-
-struct LimitedOutcome {
-    std::vector<AxisState> samples;
-    std::vector<AxisVector> points{AxisVector::Zero()};
-    double longest_stop = 0.0;  // s, from a hold or an abort to rest
-    bool aborted = false;
-};
-
-// Plans `blocks` and runs them, changing the rate at the given ticks (< 0: abort).
-LimitedOutcome run_limited(const PlannerParameters& p, const std::vector<Block>& blocks, const std::vector<std::pair<int, double>>& events) {
-    Planner planner(p, AxisVector::Zero());
-    LimitedOutcome r;
-    std::size_t next = 0, event = 0;
-    int stopping_since = -1;
-    for (int k = 0; k < 20000000; ++k) {
-        for (; next < blocks.size(); ++next) {
-            const Result result = planner.add(blocks[next]);
-            if (result == Result::queue_full) break;
-            EXPECT_TRUE(result == Result::ok || result == Result::skipped) << static_cast<int>(result);
-            r.points.push_back(blocks[next].target);
-        }
-        if (next == blocks.size()) planner.finish();
-        for (; event < events.size() && events[event].first == k; ++event) {
-            if (events[event].second < 0.0) {
-                planner.abort();
-                r.aborted = true;
-                if (stopping_since < 0) stopping_since = k;
-                continue;
-            }
-            planner.set_rate(events[event].second);
-            if (events[event].second == 0.0 && stopping_since < 0) stopping_since = k;
-            if (events[event].second > 0.0 && !r.aborted) stopping_since = -1;
-        }
-        AxisState s;
-        planner.tick(s);
-        r.samples.push_back(s);
-        if (stopping_since >= 0 && s.velocity.isZero(0.0) && s.acceleration.isZero(0.0)) {
-            r.longest_stop = std::max(r.longest_stop, (k - stopping_since) * p.period);
-            stopping_since = -1;
-        }
-        if (r.aborted && planner.take_flushed()) break;
-        if (next == blocks.size() && planner.idle() && event == events.size()) break;
-    }
-    return r;
-}
 
 // Six rate changes at random ticks within `moving` ticks, then 1 (or an abort); the draws do not
 // depend on `moving`, so a program of the sequence can be reached without running those before it.
@@ -102,10 +58,10 @@ void check_rate_changes(std::uint64_t seed, int count, bool holds_asked, bool je
             rate_events(rng, 0, p, holds_asked, k);
             continue;
         }
-        const LimitedOutcome reference = run_limited(p, c.blocks, {});
+        const test::RateRun reference = test::run_with_rates(p, c.blocks, {});
         const std::vector<std::pair<int, double>> events =
             rate_events(rng, static_cast<int>(reference.samples.size()), p, holds_asked, k);
-        const LimitedOutcome r = run_limited(p, c.blocks, events);
+        const test::RateRun r = test::run_with_rates(p, c.blocks, events);
         SCOPED_TRACE("program " + std::to_string(k));
         const int parts_before = ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
         [&] {  // every program is checked; its first failure ends its checks
@@ -179,7 +135,7 @@ TEST(Hold, InsideABlockThatEndsInAStop) {
             blocks[1].target[1] = 50.0;
             blocks[1].line = 2;
         }
-        const LimitedOutcome r = run_limited(p, blocks, {{500, 0.0}, {3000, 1.0}});  // hold at 0.5 s, 100 mm before the stop
+        const test::RateRun r = test::run_with_rates(p, blocks, {{500, 0.0}, {3000, 1.0}});  // hold at 0.5 s, 100 mm before the stop
         ASSERT_GT(r.longest_stop, 0.0);
         EXPECT_LE(r.longest_stop, hold_time_bound(p) + 2 * p.period);
         const AxisState& held = r.samples[2999];
