@@ -26,6 +26,8 @@ struct RefKnot {
     double t;
     AxisVector value;
     int order;
+    int ends = 0;  // 1: the step's first knot, 2: its last (since 2026-12-06)
+    AxisVector step = AxisVector::Zero();
 };
 
 void ref_stages(const Kernel& k, double& a, double& b) {
@@ -33,13 +35,20 @@ void ref_stages(const Kernel& k, double& a, double& b) {
     b = k.b;
 }
 
+// Since 2026-12-06 the steps closed before `from` are summed in `settled` and those open at it
+// counted in `open`.
 std::size_t ref_add_knots(std::vector<RefKnot>& knots, std::size_t n, const AxisVector& dv, double start, const Kernel& k,
-                          double from, double to, AxisVector& v, AxisVector& a, AxisVector& j) {
+                          double from, double to, AxisVector& v, AxisVector& a, AxisVector& j, AxisVector& settled, int& open) {
     double ta = 0.0, tb = 0.0;
     ref_stages(k, ta, tb);
-    auto add = [&](double t, const AxisVector& value, int order) {
-        if (t > from || (t == from && t == start)) {
-            if (t <= to && n < knots.size()) knots[n++] = {t, value, order};
+    const bool one = tb <= 1e-9 * ta;
+    const double close = ta <= 0.0 ? start : one ? start + ta : start + ta + tb;
+    auto listed = [&](double t) { return t > from || (t == from && t == start); };
+    if (!listed(close)) settled += dv;
+    else if (!listed(start)) ++open;
+    auto add = [&](double t, const AxisVector& value, int order, int ends = 0) {
+        if (listed(t)) {
+            if (t <= to && n < knots.size()) knots[n++] = {t, value, order, ends, dv};
             return;
         }
         const double dt = from - t;
@@ -48,16 +57,16 @@ std::size_t ref_add_knots(std::vector<RefKnot>& knots, std::size_t n, const Axis
         else v += value;
     };
     if (ta <= 0.0) {
-        add(start, dv, 1);
-    } else if (tb <= 1e-9 * ta) {  // a negligible second stage: one stage (5c02b7e)
-        add(start, dv / ta, 2);
-        add(start + ta, -dv / ta, 2);
+        add(start, dv, 1, 3);
+    } else if (one) {  // a negligible second stage: one stage (5c02b7e)
+        add(start, dv / ta, 2, 1);
+        add(start + ta, -dv / ta, 2, 2);
     } else {
         const AxisVector jk = dv / (ta * tb);
-        add(start, jk, 3);
+        add(start, jk, 3, 1);
         add(start + tb, -jk, 3);
         add(start + ta, -jk, 3);
-        add(start + ta + tb, jk, 3);
+        add(start + ta + tb, jk, 3, 2);
     }
     return n;
 }
@@ -68,12 +77,14 @@ LimitCheck ref_check(std::span<const TimedLeg> legs, double from, double to, con
     std::vector<RefKnot> knots(legs.size() * 8);
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
+    AxisVector settled = AxisVector::Zero();
+    int open = 0;
     // Since 2026-12-02 a leg's falling edge and the next leg's rising edge on the same kernel at
     // the same time to 1e-12 s (a junction's step) are one edge at the rise, of the two
     // velocities' difference.
     const TimedLeg* previous = nullptr;  // the leg whose falling edge is not added yet
     auto add_fall = [&](const TimedLeg& leg) {
-        n = ref_add_knots(knots, n, AxisVector(-(leg.delta / leg.tv)), leg.rise + leg.fall, leg.falling, from, to, v, a, j);
+        n = ref_add_knots(knots, n, AxisVector(-(leg.delta / leg.tv)), leg.rise + leg.fall, leg.falling, from, to, v, a, j, settled, open);
     };
     for (const TimedLeg& leg : legs) {
         // A leg both of whose steps are done before `from` adds 0 to the state there: since
@@ -87,16 +98,21 @@ LimitCheck ref_check(std::span<const TimedLeg> legs, double from, double to, con
         const bool junction = previous != nullptr && previous->falling.a == leg.rising.a && previous->falling.b == leg.rising.b &&
                               std::abs(previous->rise + previous->fall - leg.rise) <= 1e-12;
         if (junction) {
-            n = ref_add_knots(knots, n, AxisVector(dv - previous->delta / previous->tv), leg.rise, leg.rising, from, to, v, a, j);
+            n = ref_add_knots(knots, n, AxisVector(dv - previous->delta / previous->tv), leg.rise, leg.rising, from, to, v, a, j, settled, open);
         } else {
             if (previous != nullptr) add_fall(*previous);
-            n = ref_add_knots(knots, n, dv, leg.rise, leg.rising, from, to, v, a, j);
+            n = ref_add_knots(knots, n, dv, leg.rise, leg.rising, from, to, v, a, j, settled, open);
         }
         previous = &leg;
     }
     if (previous != nullptr) add_fall(*previous);
     std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n),
               [](const RefKnot& x, const RefKnot& y) { return x.t < y.t; });
+    // Since 2026-12-06, where no step is open the sums are put back on their exact values.
+    auto settle = [&] {
+        if (open == 0) v = settled, a.setZero(), j.setZero();
+    };
+    settle();
     LimitCheck result;
     auto over = [&](double value, double limit, double t, int axis, int derivative) {
         if (limit > 0.0 && std::abs(value) > limit * slack && result.ok) result = {false, t, axis, derivative, value};
@@ -134,8 +150,11 @@ LimitCheck ref_check(std::span<const TimedLeg> legs, double from, double to, con
             const RefKnot& knot = knots[k];
             if (knot.order == 2) jump += knot.value, jumps = true;
             (knot.order == 3 ? j : knot.order == 2 ? a : v) += knot.value;
+            if (knot.ends & 1) ++open;
+            if (knot.ends & 2) --open, settled += knot.step;
         }
         --k;
+        settle();
         if (jumps)
             for (int i = 0; i < limits.axes; ++i)
                 if (jump[i] != 0.0) over(jump[i] / period, limits.axis[i].max_jerk, t, i, 3);

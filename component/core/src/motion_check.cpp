@@ -42,10 +42,12 @@ void stages(const Kernel& k, double& a, double& b) {
 // (v, a, j). Both from the same knot times, so a knot that rounds onto `from` is counted exactly
 // once. Only the first `axes` entries of the vectors are computed.
 // (Axes > 0: that many axes, known to the compiler; 0: `axes` of them.)
+// A step is open from its first knot to its last; `settled` sums the steps closed before `from`,
+// `open` counts those open at it.
 template <int Axes>
 std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>& knots, std::size_t n, const AxisVector& step,
                       double start, const Kernel& k, double from, double to, int runtime_axes, AxisVector& v, AxisVector& a,
-                      AxisVector& j) {
+                      AxisVector& j, AxisVector& settled, int& open) {
     const int axes = Axes > 0 ? Axes : runtime_axes;
     double ta = 0.0, tb = 0.0;
     stages(k, ta, tb);
@@ -53,12 +55,20 @@ std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>
     const double divisor = ta <= 0.0 ? 0.0 : one_stage ? ta : ta * tb;
     edge.order = ta <= 0.0 ? 1 : one_stage ? 2 : 3;
     for (int i = 0; i < axes; ++i) edge.jump[i] = divisor != 0.0 ? step[i] / divisor : step[i];
+    for (int i = 0; i < axes; ++i) edge.step[i] = step[i];
     const AxisVector& jump = edge.jump;
+    const double close = ta <= 0.0 ? start : one_stage ? start + ta : start + ta + tb;  // its last knot
     // At `from` the state holds every knot before it and those at it but the kernel's start (the
     // response is 0 there, its right-hand derivatives are not).
-    auto add = [&](double t, bool flip) {
-        if (t > from || (t == from && t == start)) {
-            if (t <= to && n < knots.size()) knots[n++] = {t, e, flip ? 1u : 0u};
+    auto listed = [&](double t) { return t > from || (t == from && t == start); };
+    if (!listed(close)) {
+        for (int i = 0; i < axes; ++i) settled[i] += step[i];
+    } else if (!listed(start)) {
+        ++open;
+    }
+    auto add = [&](double t, bool flip, std::uint32_t ends = 0) {
+        if (listed(t)) {
+            if (t <= to && n < knots.size()) knots[n++] = {t, e, (flip ? Knot::flip : 0u) | ends};
             return;
         }
         const double dt = from - t;
@@ -78,15 +88,15 @@ std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>
         }
     };
     if (ta <= 0.0) {
-        add(start, false);
+        add(start, false, Knot::first | Knot::last);
     } else if (one_stage) {
-        add(start, false);
-        add(start + ta, true);
+        add(start, false, Knot::first);
+        add(close, true, Knot::last);
     } else {
-        add(start, false);
+        add(start, false, Knot::first);
         add(start + tb, true);
         add(start + ta, true);
-        add(start + ta + tb, false);
+        add(close, false, Knot::last);
     }
     return n;
 }
@@ -139,9 +149,15 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
     std::size_t n = 0;
     AxisVector v = AxisVector::Zero(), a = AxisVector::Zero(), j = AxisVector::Zero();
     std::uint32_t e = 0;
+    // Where no step is open the sums are exact: the velocity is that of the steps closed, the
+    // acceleration and jerk 0. The running sums are put back there, or their rounding grows with
+    // the time swept (3.5e-7 of a velocity limit 18 s on: a refusal no corner could mend, retried
+    // until the corners crawled; RateChange.AnOverrideAndBackDoesNotLeaveTheToolCrawling).
+    AxisVector settled = AxisVector::Zero();
+    int open = 0;
     auto emit = [&](const AxisVector& step, double start, const Kernel& k) {
         const std::size_t before = n;
-        n = add_knots<Axes>(edges_[e], e, knots, n, step, start, k, from, to, axes, v, a, j);
+        n = add_knots<Axes>(edges_[e], e, knots, n, step, start, k, from, to, axes, v, a, j, settled, open);
         if (n > before) ++e;
     };
     // A leg's falling edge waits for the next leg: where that one rises on the same step (the
@@ -172,6 +188,8 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
     // The same comparisons of t as sorting the knots with their jumps would make: the same order,
     // ties included.
     std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n), [](const Knot& x, const Knot& y) { return x.t < y.t; });
+    if (open == 0)
+        for (int i = 0; i < axes; ++i) v[i] = settled[i], a[i] = 0.0, j[i] = 0.0;
     Checker<Axes> c(limits);
     c.state(from, v, a);
     double t = from;
@@ -205,17 +223,27 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
         bool jumps = false, moved = false;
         for (; k < n && knots[k].t <= t + same_knot; ++k) {
             const Edge& edge = edges_[knots[k].edge];
-            const bool flip = knots[k].flip != 0;
+            const std::uint32_t flags = knots[k].flags;
+            const bool flip = (flags & Knot::flip) != 0;
             AxisVector& target = edge.order == 3 ? j : edge.order == 2 ? a : v;
             for (int i = 0; i < axes; ++i) {
                 const double value = flip ? -edge.jump[i] : edge.jump[i];
                 target[i] += value;
                 if (edge.order == 2) jump[i] += value;
             }
+            if (flags & Knot::first) ++open;
+            if (flags & Knot::last) {
+                --open;
+                for (int i = 0; i < axes; ++i) settled[i] += edge.step[i];
+            }
             jumps = jumps || edge.order == 2;
             moved = moved || edge.order != 3;  // a jump in jerk leaves v and a as they were checked
         }
         --k;
+        if (open == 0) {
+            for (int i = 0; i < axes; ++i) v[i] = settled[i], a[i] = 0.0, j[i] = 0.0;
+            moved = true;
+        }
         if (jumps)
             for (int i = 0; i < axes; ++i)  // a jump in acceleration, as the samples' differences see it
                 if (jump[i] != 0.0) c.over(jump[i] / period, t, i, 3);

@@ -76,12 +76,14 @@ public:
     // (1 velocity, 2 acceleration, 3 jerk) at some of its knots, -jump at the others.
     struct Edge {
         AxisVector jump;
+        AxisVector step;  // the velocity it changes by in all
         int order;
     };
     struct Knot {
         double t;
         std::uint32_t edge;
-        std::uint32_t flip;  // 1: -jump
+        std::uint32_t flags;  // flip: -jump; first, last: the step's first and last knot
+        static constexpr std::uint32_t flip = 1, first = 2, last = 4;
     };
 
 private:
