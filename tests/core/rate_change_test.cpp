@@ -121,3 +121,9 @@ TEST(RateChange, RandomMachinesWithManyBlocksWaiting) { check_deep_queue(71, 16)
 // velocity limit over the 18 s it swept, above the limit where a block cruised at it; no corner
 // could mend that, and each retry of the change lowered the same corners again.
 TEST(RateChange, AnOverrideAndBackDoesNotLeaveTheToolCrawling) { check_deep_queue(72, 0, 56, 1); }
+
+// Found at FIRTP_RANDOM_SCALE=4 with FIRTP_RANDOM_SEED=6 (program 51): a change at period 2119
+// whose plan failed a jerk limit 2 ms ahead, the same excess whatever the corner it lowered; each
+// retry lowered that corner 12 times more, and the program never ended. Lowering that does not
+// touch the failure now ends the try, and a retry keeps no cap below 0.9^12 of the corner's feed.
+TEST(RateChange, ARetriedChangeDoesNotLowerACornerThatCannotMendIt) { check_deep_queue(77, 0, 51); }

@@ -14,6 +14,9 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int max_check_attempts = 12;
 constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
+// A change retried at later ticks keeps the corners its tries lowered, down to what one try from
+// scratch lowers a corner to (0.9^12 of its feed).
+const double retry_floor = std::pow(check_backoff, max_check_attempts);
 constexpr double crawl_fraction = 1e-3;
 // check()'s *bad when the block under way cannot take the new plan (no corner to lower).
 constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
@@ -357,6 +360,7 @@ std::size_t Lookahead::covered_from(std::size_t from, std::size_t first, double 
 }
 
 bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) {
+    limit_failure_ = {};
     std::size_t from = context(first);
     // Held: what follows the hold's stop starts only after a resume, which plans and checks it
     // again; the check ends at the stop.
@@ -454,6 +458,7 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     ++stats_.checks;
     stats_.legs_checked += legs;
     LimitCheck limits = sweep_.check(std::span<const TimedLeg>(legs_.data(), legs), sweep_from, end, machine_, parameters_.period);
+    limit_failure_ = limits;
     // Steps freeze when their kernels start, in order: a leg's falling kernel may not start before
     // its rising one (the spacing rules keep that; dense runs and their stops are checked here).
     for (std::size_t k = 0; k < legs && limits.ok; ++k)
@@ -521,6 +526,10 @@ void Lookahead::replan(std::size_t first) {
     for (std::size_t i = kept; i < count_; ++i) saved_[i] = seg(i);
     bool saved_all = kept == 0;
     std::size_t from = first;
+    // The corner the last attempt lowered, its cap before, and the limit that failed then.
+    std::size_t lowered = count_;
+    double lowered_cap = 0.0;
+    LimitCheck lowered_for;
     for (int attempt = 0;; ++attempt) {
         forward(from);
         // The check starts where the motion changed: the backward pass also goes back over blocks
@@ -536,16 +545,26 @@ void Lookahead::replan(std::size_t first) {
             break;
         }
         ++stats_.checks_failed;
-        if (fallback && (bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
+        // The same limit failed at the same moment by the same amount: lowering that corner did
+        // not touch it, nor will lowering it further (a change retried at every tick lowered the
+        // same corner 0.9x a try until the tool crawled: RateChange seed 77 program 51).
+        const LimitCheck& f = limit_failure_;
+        auto near = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max({std::abs(x), std::abs(y), 1.0}); };
+        const bool futile = fallback && lowered < count_ && !f.ok && !lowered_for.ok && f.axis == lowered_for.axis &&
+                            f.derivative == lowered_for.derivative && near(f.time, lowered_for.time) && near(f.value, lowered_for.value);
+        if (futile) seg(lowered).learned_cap = lowered_cap;
+        lowered = count_;
+        if (fallback && (futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
             // No plan after the hold's or the resume's change passes: the accepted one goes on
             // (never an unchecked one) and the change is tried again at the next tick, from the
             // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
             // with 256 blocks waiting: tests/soak).
             const bool same_blocks = count_ == snapshot_count_;
+            auto floor = [&](std::size_t i) { return retry_floor * std::min(target(i), i + 1 < count_ ? target(i + 1) : target(i)); };
             for (std::size_t i = 0; i < snapshot_count_; ++i) {
                 Segment& s = seg(i);
                 if (same_blocks && s.line == snapshot_[i].line && s.end == snapshot_[i].end)
-                    snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, s.learned_cap);
+                    snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, std::max(s.learned_cap, floor(i)));
                 s = snapshot_[i];
             }
             count_ = snapshot_count_;
@@ -599,9 +618,10 @@ void Lookahead::replan(std::size_t first) {
         Segment& j = seg(bad);
         double factor = check_backoff;
         if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
-        const double lowered = factor * std::max(j.b, j.next_a);
-        if (lowered > 1e-6 * j.feed) {
-            j.learned_cap = std::min(j.learned_cap, lowered);
+        const double lower = factor * std::max(j.b, j.next_a);
+        lowered = bad, lowered_cap = j.learned_cap, lowered_for = limit_failure_;
+        if (lower > 1e-6 * j.feed) {
+            j.learned_cap = std::min(j.learned_cap, lower);
         } else {  // not even a crawl passes it: a stop (a corner at speed 0 would never start again)
             j.forced_stop = true;
             junction_caps(bad);

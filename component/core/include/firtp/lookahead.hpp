@@ -446,6 +446,7 @@ private:
     bool next_is_start_ = false;
     double next_start_ = 0.0;          // the next step's kernel start, s on the timeline's clock
     double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
+    LimitCheck limit_failure_;          // the last check's limit sweep (ok: it passed, or looked no further)
     double pending_dwell_ = 0.0;       // dwell of skipped zero-length blocks: the next block's
 
     std::size_t capacity_;           // blocks add() takes
