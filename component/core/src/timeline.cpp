@@ -86,14 +86,24 @@ void Timeline::tick(AxisState& out) {
     const bool moving = count_ > 0 && clock_time(ring_[head_]) > 0.0;
     if (!moving) scale_.snap();  // nothing to ramp: an override set before a start applies at once
     else if (clock_fraction_ > 0.0 && scale_.steady_at_one()) scale_.trim(clock_fraction_, period_);  // off the grid
-    clock_fraction_ += scale_.advance(period_);
+    const double advanced = scale_.advance(period_);
+    clock_fraction_ += advanced;
     const double whole = clock_fraction_ >= 1.0 ? static_cast<double>(static_cast<std::int64_t>(clock_fraction_)) : 0.0;
     clock_tick_ += static_cast<std::int64_t>(whole);
     clock_fraction_ -= whole;
     // Back onto the planned sample grid: at rest at once (nothing moves), after a trim its rounding.
+    // At rest up to the next tick, unless a leg starting in this period would then show more of
+    // its motion in its first sample than the clock moved (the paper's chain resumed at rest: 2
+    // periods of a start in one sample, 1.08x the jerk limit in the samples' differences,
+    // RateLimits seed 0 program 307); then down, if the leg has started by then, else off the
+    // grid (the trim brings it back at rate 1).
     const bool rounding = scale_.steady_at_one() && (clock_fraction_ < 1e-9 || clock_fraction_ > 1.0 - 1e-9);
-    if (clock_fraction_ > 0.0 && (!moving || rounding)) {
-        if (!moving || clock_fraction_ > 0.5) ++clock_tick_;
+    if (clock_fraction_ > 0.0 && !moving) {
+        const double into = count_ > 0 ? clock_time(ring_[head_]) : -HUGE_VAL;  // the next leg's time now
+        if (into + (1.0 - clock_fraction_) * period_ <= advanced * period_) ++clock_tick_, clock_fraction_ = 0.0;
+        else if (into - clock_fraction_ * period_ > 0.0) clock_fraction_ = 0.0;
+    } else if (clock_fraction_ > 0.0 && rounding) {
+        if (clock_fraction_ > 0.5) ++clock_tick_;
         clock_fraction_ = 0.0;
     }
 }
