@@ -125,5 +125,5 @@ TEST(RateChange, AnOverrideAndBackDoesNotLeaveTheToolCrawling) { check_deep_queu
 // Found at FIRTP_RANDOM_SCALE=4 with FIRTP_RANDOM_SEED=6 (program 51): a change at period 2119
 // whose plan failed a jerk limit 2 ms ahead, the same excess whatever the corner it lowered; each
 // retry lowered that corner 12 times more, and the program never ended. Lowering that does not
-// touch the failure now ends the try, and a retry keeps no cap below 0.9^12 of the corner's feed.
+// touch the failure is now undone and ends the try.
 TEST(RateChange, ARetriedChangeDoesNotLowerACornerThatCannotMendIt) { check_deep_queue(77, 0, 51); }

@@ -14,9 +14,6 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int max_check_attempts = 12;
 constexpr double check_backoff = 0.9;  // a failed corner's speed is lowered by at least this factor
-// A change retried at later ticks keeps the corners its tries lowered, down to what one try from
-// scratch lowers a corner to (0.9^12 of its feed).
-const double retry_floor = std::pow(check_backoff, max_check_attempts);
 constexpr double crawl_fraction = 1e-3;
 // check()'s *bad when the block under way cannot take the new plan (no corner to lower).
 constexpr std::size_t front_unfit = static_cast<std::size_t>(-1);
@@ -560,11 +557,10 @@ void Lookahead::replan(std::size_t first) {
             // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
             // with 256 blocks waiting: tests/soak).
             const bool same_blocks = count_ == snapshot_count_;
-            auto floor = [&](std::size_t i) { return retry_floor * std::min(target(i), i + 1 < count_ ? target(i + 1) : target(i)); };
             for (std::size_t i = 0; i < snapshot_count_; ++i) {
                 Segment& s = seg(i);
                 if (same_blocks && s.line == snapshot_[i].line && s.end == snapshot_[i].end)
-                    snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, std::max(s.learned_cap, floor(i)));
+                    snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, s.learned_cap);
                 s = snapshot_[i];
             }
             count_ = snapshot_count_;
