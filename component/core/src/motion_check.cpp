@@ -54,8 +54,7 @@ std::size_t add_knots(LimitSweep::Edge& edge, std::uint32_t e, std::vector<Knot>
     const bool one_stage = tb <= negligible_stage * ta;  // (a stage of 1e-17 s: jerks of 1e21 to cancel)
     const double divisor = ta <= 0.0 ? 0.0 : one_stage ? ta : ta * tb;
     edge.order = ta <= 0.0 ? 1 : one_stage ? 2 : 3;
-    for (int i = 0; i < axes; ++i) edge.jump[i] = divisor != 0.0 ? step[i] / divisor : step[i];
-    for (int i = 0; i < axes; ++i) edge.step[i] = step[i];
+    for (int i = 0; i < axes; ++i) edge.jump[i] = divisor != 0.0 ? step[i] / divisor : step[i], edge.step[i] = step[i];
     const AxisVector& jump = edge.jump;
     const double close = ta <= 0.0 ? start : one_stage ? start + ta : start + ta + tb;  // its last knot
     // At `from` the state holds every knot before it and those at it but the kernel's start (the
@@ -155,6 +154,9 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
     // until the corners crawled; RateChange.AnOverrideAndBackDoesNotLeaveTheToolCrawling).
     AxisVector settled = AxisVector::Zero();
     int open = 0;
+    auto settle = [&] {
+        for (int i = 0; i < axes; ++i) v[i] = settled[i], a[i] = 0.0, j[i] = 0.0;
+    };
     auto emit = [&](const AxisVector& step, double start, const Kernel& k) {
         const std::size_t before = n;
         n = add_knots<Axes>(edges_[e], e, knots, n, step, start, k, from, to, axes, v, a, j, settled, open);
@@ -188,8 +190,7 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
     // The same comparisons of t as sorting the knots with their jumps would make: the same order,
     // ties included.
     std::sort(knots.begin(), knots.begin() + static_cast<std::ptrdiff_t>(n), [](const Knot& x, const Knot& y) { return x.t < y.t; });
-    if (open == 0)
-        for (int i = 0; i < axes; ++i) v[i] = settled[i], a[i] = 0.0, j[i] = 0.0;
+    if (open == 0) settle();
     Checker<Axes> c(limits);
     c.state(from, v, a);
     double t = from;
@@ -240,10 +241,7 @@ LimitCheck LimitSweep::sweep(std::span<const TimedLeg> legs, double from, double
             moved = moved || edge.order != 3;  // a jump in jerk leaves v and a as they were checked
         }
         --k;
-        if (open == 0) {
-            for (int i = 0; i < axes; ++i) v[i] = settled[i], a[i] = 0.0, j[i] = 0.0;
-            moved = true;
-        }
+        if (open == 0) settle(), moved = true;
         if (jumps)
             for (int i = 0; i < axes; ++i)  // a jump in acceleration, as the samples' differences see it
                 if (jump[i] != 0.0) c.over(jump[i] / period, t, i, 3);
