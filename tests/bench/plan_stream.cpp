@@ -4,8 +4,9 @@
 //                     [--max-growth-kib K] [--slowest N] [--per-period K]
 //   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json] [--slowest N] [--per-period K]
 //
-// Plans and samples block by block through the Planner as the servo thread would
-// (plan_trajectory's loop), but keeps no samples: only running maxima. With --generate the program
+// Plans and samples block by block through the Planner as the servo thread would (each add
+// planned at once, as firtp_tp and firtp.so add; plan_trajectory plans its adds in batches), but
+// keeps no samples: only running maxima. With --generate the program
 // is made on the fly, one block at a time, so memory is O(queue), not O(program):
 //   spiral  an Archimedean spiral from R 60 mm, 0.5 mm apart, in chords of 0.3-0.7 mm, F6000,
 //           G64 P0.05 (a long CAM-like chorded curve; at R 60 the filters' radial shrink

@@ -5,6 +5,7 @@
 // block's feed at the highest override into the corner after it, and so did the dense block after
 // that corner. Found by firtp_cliffs (seed 31, program 3; seed 7, program 270). Measured on the
 // samples: the path speed wherever the tool is in the middle half of a block.
+#include <firtp/planner.hpp>
 #include <firtp/trajectory.hpp>
 
 #include <gtest/gtest.h>
@@ -82,6 +83,50 @@ TEST(ProgrammedFeed, ADenseBlockKeepsTheFeedOfTheBlockAfterItsCorner) {
     EXPECT_GT(inside, 20);
     EXPECT_LE(fastest, slow * (1.0 + 1e-6)) << "the middle half of the block above its feed";
     EXPECT_LT((t.samples.back().position - d).norm(), 1e-9);
+}
+
+// Blocks added one at a time, a period between each (as firtp_tp and firtp.so take them): the
+// block before the newest was planned with the stop at the end of the path after it, and kept
+// that plan when the newest made its end a corner, where its bounds did not change: it left the
+// corner at its own feed (81.06 mm/s), above the next block's 56.02, which the next block then
+// braked from (random seed 1 program 43; plan_trajectory, planning the two at once, did not).
+TEST(ProgrammedFeed, TheBlockBeforeTheNewestIsPlannedAgainForItsCorner) {
+    PlannerParameters p;
+    p.limits.axes = 2;
+    p.limits.axis[0] = {80.934583018461694, 7300.2501078571713, 1321903.7854885906};
+    p.limits.axis[1] = {253.99391015781211, 1244.6945948199213, 70275596.866552189};
+    p.period = 0.0005;
+    p.max_rate = 2.0;
+    p.queue_capacity = 64;
+    AxisVector a = AxisVector::Zero(), b = AxisVector::Zero();
+    a.head<2>() << -54.05575420844427, 3.0115427295889918;
+    b.head<2>() << -92.45110612383499, 5.4070301371953544;
+    const double slow = 56.021738729489485, tolerance = 0.0011622480766995803;
+    const std::vector<Block> blocks{{a, 572.28277167974045, Termination::blend, tolerance, MotionType::feed, 1},
+                                    {b, slow, Termination::blend, tolerance, MotionType::feed, 2}};
+    for (const Planning when : {Planning::now, Planning::at_update}) {
+        Planner planner(p, AxisVector::Zero());
+        PlannerInput in;
+        PlannerOutput out;
+        std::vector<AxisState> samples;
+        for (const Block& block : blocks) {
+            ASSERT_EQ(planner.add(block, when), Result::ok);
+            planner.update(in, out);
+            samples.push_back(out.state);
+        }
+        in.end_of_program = true;
+        for (Result r = Result::working; r == Result::working;) {
+            r = planner.update(in, out);
+            samples.push_back(out.state);
+        }
+        // Past the corner (along the path) the tool is in the slow block: at most its feed.
+        const AxisVector u = (b - a).normalized();
+        double fastest = 0.0;
+        for (const AxisState& s : samples)
+            if ((s.position - a).dot(u) > 0.0) fastest = std::max(fastest, s.velocity.norm());
+        EXPECT_LE(fastest, slow * (1.0 + 1e-6)) << (when == Planning::now ? "added now" : "added at the update");
+        EXPECT_LT((samples.back().position - b).norm(), 1e-9);
+    }
 }
 
 }  // namespace

@@ -95,6 +95,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
 
 void Lookahead::reset(const AxisVector& position) {
     ramp_change_ = static_cast<std::size_t>(-1);
+    batch_.open = false;
     head_ = 0;
     count_ = 0;
     goal_ = position;
@@ -919,14 +920,29 @@ void Lookahead::forward(std::size_t from) {
 
 // ---- Adding a block ----------------------------------------------------------------------------
 
-Result Lookahead::add(const Block& block) {
+void Lookahead::open_batch() {
+    Batch& b = batch_;
+    if (b.window.size() < segments_.size()) b.window.resize(segments_.size()), b.blocks.reserve(capacity_);
+    b.open = true;
+    b.blocks.clear();
+    for (std::size_t i = 0; i < count_; ++i) b.window[i] = seg(i);
+    b.head = head_, b.count = count_, b.goal = goal_;
+    b.pending_dwell = pending_dwell_, b.max_width = max_width_, b.context_span = context_span_;
+    b.ramp_change = ramp_change_, b.unfit = stats_.unfit, b.finished = finished_;
+}
+
+Result Lookahead::add(const Block& block, Planning when) {
+    if (when == Planning::now) plan_added();
+    else if (!batch_.open) open_batch();
     const AxisVector delta = block.target - goal_;
     const double length = delta.norm();
     if (length < min_block_length) {  // skipped; its dwell goes to the next block
         pending_dwell_ += block.dwell;
+        if (when == Planning::at_update) batch_.blocks.push_back(block);
         return Result::skipped;
     }
     if (count_ >= capacity_) return Result::queue_full;
+    if (when == Planning::at_update) batch_.blocks.push_back(block);
     Segment s;
     s.dwell = pending_dwell_ + block.dwell;
     s.added = static_cast<double>(timeline_->now()) * parameters_.period;
@@ -957,15 +973,22 @@ Result Lookahead::add(const Block& block) {
     finished_ = false;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
-    std::size_t changed = backward(count_ - 1, count_ >= 3 ? count_ - 3 : 0);  // (link() changed junction count_ - 3 on)
-    // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
-    // (the pass above may have stopped before it; the bounds are the same).
-    if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
-    replan(changed);
+    // (link() changed junction count_ - 3 on.) The block before is planned again whatever its
+    // bounds: its exit was the end of the path's stop and is a corner now.
+    if (when == Planning::now) replan(std::min(bounds_from_end(count_ >= 3 ? count_ - 3 : 0), count_ >= 2 ? count_ - 2 : 0));
     return Result::ok;
 }
 
+std::size_t Lookahead::bounds_from_end(std::size_t settled) {
+    std::size_t changed = backward(count_ - 1, settled);
+    // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
+    // (the pass above may have stopped before it; the bounds are the same).
+    if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
+    return changed;
+}
+
 void Lookahead::set_rate(double rate) {
+    plan_added();
     rate = std::clamp(rate, 0.0, max_rate_);
     const bool hold = rate == 0.0;
     if (hold == held_ && (hold || rate == rate_)) return;

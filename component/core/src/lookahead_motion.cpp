@@ -215,7 +215,36 @@ void Lookahead::freeze(const NextStep& n) {
     refresh_current_leg();
 }
 
+bool Lookahead::start_due() const {
+    if (count_ == 0 || held_ || batch_.open) return false;
+    const double period = parameters_.period;
+    const double now = static_cast<double>(timeline_->now()) * period;
+    if (next_known_) return next_is_start_ && next_start_ - now <= 1e-9 * period;
+    const NextStep n = next_step();
+    return n.kind == StepKind::start && n.centre - 0.5 * n.step.kernel.width() <= 1e-9 * period;
+}
+
+void Lookahead::plan_added() {
+    Batch& b = batch_;
+    if (!b.open) return;
+    b.open = false;
+    if (count_ == b.count) return;  // only skipped blocks: their dwell waits for the next
+    // The bounds once for the batch (its first block settled junction count - 2), and the plan
+    // from the junction it joined on.
+    const std::size_t joined = b.count > 0 ? b.count - 1 : 0;
+    if (replan(std::min(bounds_from_end(b.count >= 2 ? b.count - 2 : 0), joined), b.blocks.size() > 1)) return;
+    // Undone: the window as the batch found it, and its blocks added one by one.
+    head_ = b.head, count_ = b.count, goal_ = b.goal;
+    for (std::size_t i = 0; i < count_; ++i) seg(i) = b.window[i];
+    pending_dwell_ = b.pending_dwell, max_width_ = b.max_width, context_span_ = b.context_span;
+    ramp_change_ = b.ramp_change, stats_.unfit = b.unfit, finished_ = b.finished;
+    next_known_ = false;
+    ++stats_.batches_undone;
+    for (const Block& block : b.blocks) add(block, Planning::now);
+}
+
 void Lookahead::commit() {
+    plan_added();
     const double period = parameters_.period;
     if (retry_ && count_ > 0) {  // a hold's stop or a resume that failed its check: again from here
         retry_ = false;
@@ -500,7 +529,7 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     return true;
 }
 
-void Lookahead::replan(std::size_t first) {
+bool Lookahead::replan(std::size_t first, bool undoable) {
     next_known_ = false;
     first = std::min(first, take_ramp_change());
     // Under way, a failed change falls back on the accepted plan (at rest there is nothing to keep).
@@ -514,7 +543,7 @@ void Lookahead::replan(std::size_t first) {
     snapshot_taken_ = false;
     if (first >= count_) {
         refresh_current_leg();
-        return;
+        return true;
     }
     // The accepted plan, restored if no change passes the check: [first - 1, count) now (planning
     // segment `first` sets the junction fields of the one before), the rest on the first failure
@@ -551,6 +580,8 @@ void Lookahead::replan(std::size_t first) {
                             f.derivative == lowered_for.derivative && near(f.time, lowered_for.time) && near(f.value, lowered_for.value);
         if (futile) seg(lowered).learned_cap = lowered_cap;
         lowered = count_;
+        // A batch with no plan short of the last resort: undone (plan_added).
+        if (undoable && (futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) return false;
         if (fallback && (futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
             // No plan after the hold's or the resume's change passes: the accepted one goes on
             // (never an unchecked one) and the change is tried again at the next tick, from the
@@ -566,7 +597,7 @@ void Lookahead::replan(std::size_t first) {
             count_ = snapshot_count_;
             retry_ = true;
             refresh_current_leg();
-            return;
+            return true;
         }
         if (!saved_all) {
             for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
@@ -655,6 +686,7 @@ void Lookahead::replan(std::size_t first) {
         }
     }
     refresh_current_leg();
+    return true;
 }
 
 }  // namespace firtp

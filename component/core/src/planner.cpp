@@ -50,7 +50,7 @@ Planner::Planner(const PlannerParameters& parameters, const AxisVector& start)
 
 Planner::~Planner() = default;
 
-Result Planner::add(const Block& block) {
+Result Planner::add(const Block& block, Planning when) {
     const bool blend = block.termination == Termination::blend;
     if (!finite(block.target) || !std::isfinite(block.feed) || block.feed <= 0.0 || std::isnan(block.tolerance) ||
         (blend && !(block.tolerance > 0.0)) || !(block.dwell >= 0.0 && block.dwell <= max_dwell)) {
@@ -66,7 +66,7 @@ Result Planner::add(const Block& block) {
                 refusal_ = absent_axis_names[a];
                 return Result::absent_axis;
             }
-    const Result r = paper_ ? paper_->add(block) : lookahead_->add(block);
+    const Result r = paper_ ? paper_->add(block) : lookahead_->add(block, when);
     if (r == Result::ok) ++accepted_;
     if (r == Result::invalid_block) refusal_ = "invalid block";
     if (r == Result::infeasible)

@@ -54,7 +54,8 @@ public:
     Lookahead(const PlannerParameters& parameters, Timeline& timeline, const AxisVector& start);
 
     // Validated by the caller; queue_full leaves everything as it was; skipped: zero length.
-    Result add(const Block& block);
+    // Planning::at_update: the speeds and their check wait for the next commit or rate change.
+    Result add(const Block& block, Planning when = Planning::now);
     // No more blocks follow for now: the stop at the end is the end of the program.
     void finish() { finished_ = true; }
     // Freeze every step whose kernel starts by the timeline's current tick: its leg goes to the
@@ -68,6 +69,9 @@ public:
     // Everything planned is dropped; rest at `position`.
     void reset(const AxisVector& position);
 
+    // A start (from rest, or after a stop) is due at the next commit: it then asks whether the
+    // window settles it (final_for_start), so a caller adding blocks in batches fills it first.
+    bool start_due() const;
     bool empty() const { return count_ == 0; }           // nothing waits
     bool at_rest() const { return !moving(); }  // nothing under way (blocks may wait)
     std::size_t depth() const { return count_; }
@@ -389,7 +393,12 @@ private:
     void freeze(const NextStep& next);
     void pop_front(bool stop);
     void refresh_current_leg();
-    void replan(std::size_t first_changed);
+    // false: `undoable` (a batch of blocks) and no plan passed short of the last resort.
+    bool replan(std::size_t first_changed, bool undoable = false);
+    // The backward pass from the newest block, junctions up to `settled` settled before: the
+    // lowest segment whose bounds or end flags changed.
+    std::size_t bounds_from_end(std::size_t settled);
+    void plan_added();  // what add(at_update) left, before anything reads the plan
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
@@ -472,6 +481,22 @@ private:
     std::size_t snapshot_count_ = 0;
     bool snapshot_taken_ = false;       // for the replan under way
     bool retry_ = false;                // the change failed: again at the next tick
+    // Blocks added at_update since the last plan, and the window as the first of them found it.
+    // A batch whose plan fails its check beyond lowering corners is undone and added again block
+    // by block: the last resort (keep the accepted plan, start the newest block from rest after
+    // it) is one block's. Off the real-time path: the store is allocated by the first batch.
+    struct Batch {
+        bool open = false;
+        std::vector<Block> blocks;
+        std::vector<Segment> window;
+        std::size_t head = 0, count = 0;
+        AxisVector goal;
+        double pending_dwell = 0.0, max_width = 0.0, context_span = 0.0;
+        std::size_t ramp_change = 0;
+        std::uint64_t unfit = 0;
+        bool finished = false;
+    } batch_;
+    void open_batch();
     std::vector<CornerReport> reports_; // ring of corner reports, filled as junctions freeze
     std::size_t report_head_ = 0, report_count_ = 0;
 };

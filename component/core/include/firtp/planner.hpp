@@ -54,8 +54,9 @@ public:
     ~Planner();
 
     // Validates and queues one block: ok, skipped (zero length), queue_full (nothing changes), or
-    // refused (nothing changes): invalid_block, absent_axis or infeasible (types.hpp).
-    Result add(const Block& block);
+    // refused (nothing changes): invalid_block, absent_axis or infeasible (types.hpp). Planned now
+    // or at the next update (Planning); the paper's mode plans now either way.
+    Result add(const Block& block, Planning when = Planning::now);
     // Why the last add() refused its block, in words (names the axis of absent_axis).
     const char* refusal() const { return refusal_; }
 
@@ -84,6 +85,9 @@ public:
     AxisVector braking_rest(const AxisVector& position, const AxisVector& velocity) const;
 
     bool idle() const;                 // nothing waits, nothing moves
+    // A start is due at the next update and asks whether the blocks known settle it (a caller
+    // adding blocks in batches, Planning::at_update, fills the queue first; the paper's mode: no).
+    bool start_due() const { return lookahead_ && lookahead_->start_due(); }
     // Blocks that move (zero-length ones are skipped) accepted, and of those finished, since the
     // last reset or abort.
     std::uint64_t accepted() const { return accepted_; }

@@ -45,6 +45,7 @@ struct PlannerStats {
     std::uint64_t checks = 0;         // plans the exact check measured
     std::uint64_t legs_checked = 0;   // the legs those checks summed: their context and the changed tail
     std::uint64_t unfit = 0;          // segment plans whose legs did not cover the block (a defect)
+    std::uint64_t batches_undone = 0; // blocks added at_update whose plan failed: added again one by one
 };
 
 }  // namespace firtp

@@ -48,6 +48,12 @@ struct AxisState {
     std::int64_t line = 0;  // line of the newest block that has started moving (0 when idle)
 };
 
+// When Planner::add plans the block: now (each add pays its own planning: what a servo period's
+// budget measures), or at the next update, once for every block added since (a caller that adds
+// many blocks at once, as firtp plan refilling its window: the path's end, re-planned and checked
+// at every add, is then planned once).
+enum class Planning : int { now, at_update };
+
 // What Planner::add and Planner::update return. Negative: the block is refused and nothing changed;
 // why, in words, is Planner::refusal().
 enum class Result : int {
