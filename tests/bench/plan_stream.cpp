@@ -1,8 +1,8 @@
 // Offline planning in constant memory, and the cost of planning one block.
 //
 //   firtp_plan_stream --generate spiral|random|corners [--blocks 1000000] [--seed 1] [--ini FILE] [--json]
-//                     [--max-growth-kib K] [--slowest N] [--per-period K]
-//   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json] [--slowest N] [--per-period K]
+//                     [--max-growth-kib K] [--slowest N] [--per-period K] [--batch]
+//   firtp_plan_stream --program FILE.ngc [--ini FILE] [--json] [--slowest N] [--per-period K] [--batch]
 //
 // Plans and samples block by block through the Planner as the servo thread would (each add
 // planned at once, as firtp_tp and firtp.so add; plan_trajectory plans its adds in batches), but
@@ -17,7 +17,9 @@
 // Machine: the built-in one (X Y Z, 300 mm/s, 5000 mm/s^2, 10^5 mm/s^3, 1 ms, T 60/50 ms) or --ini.
 //
 // --per-period K adds at most K blocks between two servo ticks (firtp_tp plans one a period; by
-// default as many as the queue takes).
+// default as many as the queue takes). --batch adds them as plan_trajectory does (firtp plan): in
+// batches planned at the next tick; each add's time is then only its queueing, and blocks/s
+// counts the planning.
 // Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
 // this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the time
 // at the programmed feeds sum(L / F) (the paper's fixed chain: the closed form sum(Tv) + sum(Td - Tk)
@@ -32,6 +34,7 @@
 #include <firtp/ini.hpp>
 #include <firtp/machine.hpp>
 #include <firtp/planner.hpp>
+#include <firtp/trajectory.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -155,7 +158,7 @@ private:
 int usage(const char* self) {
     std::fprintf(stderr,
                  "usage: %s (--generate spiral|random|corners [--blocks N] [--seed S] | --program FILE.ngc) [--ini FILE] "
-                 "[--json] [--max-growth-kib K] [--slowest N] [--per-period K]\n",
+                 "[--json] [--max-growth-kib K] [--slowest N] [--per-period K] [--batch]\n",
                  self);
     return 2;
 }
@@ -170,6 +173,7 @@ int main(int argc, char** argv) try {
     long max_growth_kib = -1;
     std::size_t slowest_count = 0;  // --slowest: the adds with the most CPU time, by line
     long per_period = 0;            // --per-period: at most this many adds between two ticks (0: as many as fit)
+    bool batch = false;             // --batch: adds as plan_trajectory makes them (refill_due, Planning::at_update)
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--json")) json = true;
@@ -181,6 +185,7 @@ int main(int argc, char** argv) try {
         else if (!std::strcmp(argv[i], "--max-growth-kib") && has_value) max_growth_kib = std::atol(argv[++i]);
         else if (!std::strcmp(argv[i], "--slowest") && has_value) slowest_count = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--per-period") && has_value) per_period = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--batch")) batch = true;
         else return usage(argv[0]);
     }
     if (generate.empty() == program_file.empty()) return usage(argv[0]);
@@ -230,10 +235,11 @@ int main(int argc, char** argv) try {
     PlannerOutput output;
     const AxisState& state = output.state;
     for (Result motion = Result::working; motion == Result::working || pending;) {
-        for (long added = 0; pending && planner.free() > 0 && (per_period == 0 || added < per_period); ++added) {
+        const bool room = !batch || refill_due(planner);
+        for (long added = 0; room && pending && planner.free() > 0 && (per_period == 0 || added < per_period); ++added) {
             const std::int64_t c0 = thread_cpu_ns();
             const std::int64_t w0 = wall_ns();
-            const Result result = planner.add(*pending);
+            const Result result = planner.add(*pending, batch ? Planning::at_update : Planning::now);
             const std::int64_t w1 = wall_ns();
             const std::int64_t c1 = thread_cpu_ns();
             if (result == Result::queue_full) break;

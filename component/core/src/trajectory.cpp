@@ -8,6 +8,12 @@
 
 namespace firtp {
 
+bool refill_due(const Planner& planner) {
+    if (planner.fixed_chain()) return planner.free() > 0;
+    const std::size_t batch = std::max<std::size_t>(1, planner.parameters().queue_capacity / 8);
+    return planner.free() >= batch || planner.idle() || planner.start_due();
+}
+
 StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                                    BlockPuller& blocks, TrajectorySink& sink) {
     Planner planner(parameters, start);
@@ -16,15 +22,8 @@ StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const Ax
     PlannerOutput period;
     Block block;
     bool pending = blocks.next(block);  // taken from the source, not yet by the planner
-    // The queue is refilled an eighth at a time (and whenever a start asks whether the blocks
-    // known settle it), planned once at the next update: the path's end, braking to a stop after
-    // the last block, is planned and checked once a batch instead of once a block (on a dense
-    // path its braking reaches back over tens of blocks). The paper's mode plans each block as it
-    // comes: a block at a time.
-    const std::size_t batch = planner.fixed_chain() ? 1 : std::max<std::size_t>(1, parameters.queue_capacity / 8);
     for (Result motion = Result::working; motion == Result::working || pending;) {
-        const bool room = planner.free() >= batch || planner.idle() || planner.start_due();
-        for (; pending && room; pending = blocks.next(block)) {
+        for (bool room = refill_due(planner); pending && room; pending = blocks.next(block)) {
             const Result result = planner.add(block, Planning::at_update);
             if (result == Result::queue_full) break;
             if (refused(result))

@@ -11,6 +11,8 @@
 
 namespace firtp {
 
+class Planner;
+
 struct Trajectory {
     std::vector<AxisState> samples;    // t = 0 at the start point ... last sample at rest at the end
     std::vector<CornerReport> corners; // one per junction, in program order
@@ -56,9 +58,17 @@ private:
     std::size_t next_ = 0;
 };
 
-// Runs the planner as the servo thread would, blocks arriving as fast as it takes them, and hands
-// every sample and corner to `sink` as it is made (memory: the planner's queue, not the program's
-// duration). Throws std::invalid_argument naming the block's line when a block is invalid.
+// Whether plan_trajectory adds blocks before this period: an eighth of the queue is free, nothing
+// waits, or a start is due (it asks whether the blocks known settle it). It adds them with
+// Planning::at_update: the path's end, braking to a stop after the last block, is then planned
+// and checked once a batch instead of once a block (on a dense path that braking reaches back
+// over tens of blocks). The paper's mode plans each block as it comes: whenever there is room.
+bool refill_due(const Planner& planner);
+
+// Runs the planner as the servo thread would, blocks arriving in batches as fast as it takes them
+// (refill_due), and hands every sample and corner to `sink` as it is made (memory: the planner's
+// queue, not the program's duration). Throws std::invalid_argument naming the block's line when a
+// block is invalid.
 StreamedTrajectory plan_trajectory(const PlannerParameters& parameters, const AxisVector& start,
                                    std::span<const Block> blocks, TrajectorySink& sink);
 // The same, pulling the blocks from `blocks` as the planner's queue takes them (memory: the
