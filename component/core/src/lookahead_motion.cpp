@@ -215,18 +215,19 @@ void Lookahead::freeze(const NextStep& n) {
     refresh_current_leg();
 }
 
-bool Lookahead::start_due() const {
-    if (count_ == 0 || held_ || batch_.open) return false;
-    const double period = parameters_.period;
-    const double now = static_cast<double>(timeline_->now()) * period;
-    if (next_known_) return next_is_start_ && next_start_ - now <= 1e-9 * period;
+void Lookahead::find_next(double now) const {
     const NextStep n = next_step();
-    return n.kind == StepKind::start && n.centre - 0.5 * n.step.kernel.width() <= 1e-9 * period;
+    next_start_ = now + n.centre - 0.5 * n.step.kernel.width();
+    next_is_start_ = n.kind == StepKind::start;
+    next_known_ = true;
 }
 
-void Lookahead::plan_added() {
+bool Lookahead::start_due() const {
+    return count_ > 0 && !held_ && !batch_.open && next_due() && next_is_start_;
+}
+
+void Lookahead::plan_batch() {
     Batch& b = batch_;
-    if (!b.open) return;
     b.open = false;
     if (count_ == b.count) return;  // only skipped blocks: their dwell waits for the next
     // The bounds once for the batch (its first block settled junction count - 2), and the plan
@@ -253,14 +254,7 @@ void Lookahead::commit() {
     for (;;) {
         if (count_ == 0) return;
         // The next step's kernel start is kept until the plan changes: most ticks end here.
-        const double now = static_cast<double>(timeline_->now()) * period;
-        if (!next_known_) {
-            const NextStep n = next_step();
-            next_start_ = now + n.centre - 0.5 * n.step.kernel.width();
-            next_is_start_ = n.kind == StepKind::start;
-            next_known_ = true;
-        }
-        if (next_start_ - now > 1e-9 * period) {
+        if (!next_due()) {
             if (!next_is_start_) waiting_since_ = -1;
             return;
         }

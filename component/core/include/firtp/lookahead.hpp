@@ -398,7 +398,19 @@ private:
     // The backward pass from the newest block, junctions up to `settled` settled before: the
     // lowest segment whose bounds or end flags changed.
     std::size_t bounds_from_end(std::size_t settled);
-    void plan_added();  // what add(at_update) left, before anything reads the plan
+    // What add(at_update) left, before anything reads the plan (each commit asks: inline).
+    void plan_added() {
+        if (batch_.open) plan_batch();
+    }
+    void plan_batch();
+    // The next step's kernel starts by the timeline's current tick (each commit asks: inline).
+    bool next_due() const {
+        const double period = parameters_.period;
+        const double now = static_cast<double>(timeline_->now()) * period;
+        if (!next_known_) find_next(now);
+        return next_start_ - now <= 1e-9 * period;
+    }
+    void find_next(double now) const;
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
@@ -451,9 +463,10 @@ private:
     bool held_ = false;
     bool finished_ = false;
     std::int64_t waiting_since_ = -1;  // tick the first step of a start began to wait for the look-ahead
-    bool next_known_ = false;          // next_start_ holds for the plan as it is
-    bool next_is_start_ = false;
-    double next_start_ = 0.0;          // the next step's kernel start, s on the timeline's clock
+    // The next step, kept until the plan changes (next_due() finds it).
+    mutable bool next_known_ = false;  // next_start_ holds for the plan as it is
+    mutable bool next_is_start_ = false;
+    mutable double next_start_ = 0.0;  // the next step's kernel start, s on the timeline's clock
     double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
     LimitCheck limit_failure_;          // the last check's limit sweep (ok: it passed, or looked no further)
     double pending_dwell_ = 0.0;       // dwell of skipped zero-length blocks: the next block's
