@@ -96,3 +96,35 @@ TEST(AloneBlocks, AShortG61BlockAfterACornerIsNotSlowedByALooserTolerance) {
     EXPECT_LE(cycle[1], cycle[0] + p.period);
     EXPECT_LT(cycle[1], 0.08);  // 0.0665 s (0.2495 s before)
 }
+
+// A lone 0.124 mm block on a machine whose axis 1 has no jerk limit (firtp_cliffs seed 31 program
+// 85). Starts and stops were sized only where every axis limits jerk; this block was planned dense
+// in its tolerance's regime instead, crawling at 1.9 mm/s, and slower with a looser tolerance
+// (0.083 -> 0.088 s). Sized to itself it takes 0.021 s under both.
+TEST(AloneBlocks, ALoneBlockIsSizedToItselfWhereAnAxisHasNoJerkLimit) {
+    PlannerParameters p;
+    p.period = 0.001;
+    p.max_rate = 1.0;
+    p.limits.axes = 4;
+    p.limits.axis[0] = {199.352, 1835.1, 8.82336e6};
+    p.limits.axis[1] = {253.383, 488.504, 0.0};
+    p.limits.axis[2] = {386.087, 1116.48, 1.30247e6};
+    p.limits.axis[3] = {399.185, 4758.72, 55695.0};
+    double cycle[2] = {0.0, 0.0};
+    for (const int looser : {0, 1}) {
+        Block b;
+        b.target.head<4>() << -0.10227018278698662, -0.043067331194789414, 0.05494297946735615, 0.0086392274705789258;
+        b.feed = 76.4011;
+        b.tolerance = 0.60056 * (looser ? 1.25 : 1.0);
+        b.line = 1;
+        SCOPED_TRACE("tolerance " + std::to_string(b.tolerance));
+        const std::vector<Block> blocks{b};
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+        const test::CaseRatios r = test::case_ratios(p, blocks, t);
+        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+        cycle[looser] = t.cycle_time;
+        std::printf("tolerance %.4f mm: cycle %.5f s\n", b.tolerance, t.cycle_time);
+    }
+    EXPECT_LE(cycle[1], cycle[0] + p.period);
+    EXPECT_LT(cycle[0], 0.03);  // 0.021 s (0.083 s before)
+}

@@ -73,7 +73,10 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     for (int i = limits_.axes; i < max_axes; ++i) sparse_.cap[i] = infinity;
     jerk_norm_ = all_jerk ? std::sqrt(jerk) : std::sqrt(acc) / parameters_.period;
-    sized_ = all_jerk && rules_.t2 > 0.0;
+    // A step along axes without a jerk limit is sized by their acceleration alone (u_jerk 0: one
+    // stage). Sizing only where every axis limits jerk left such machines' lone short blocks in a
+    // dense regime of the tolerance, slower with a looser one (firtp_cliffs seed 31 program 85).
+    sized_ = rules_.t2 > 0.0;
     double machine_acc = 0.0, machine_jerk = 0.0;  // |a|, |j| the limit sweep lets through (its slack is 1e-7 of a limit)
     for (int i = 0; i < machine_.axes; ++i) {
         const double a = machine_.axis[i].max_acceleration * (1.0 + 1e-6), j = machine_.axis[i].max_jerk * (1.0 + 1e-6);

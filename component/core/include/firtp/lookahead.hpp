@@ -28,7 +28,7 @@
 // or when the motion would otherwise have to start late. So the motion does not depend on when
 // blocks arrive, only on which, but where a later check refuses what the start has already
 // committed to, or the block under way is planned again at another moment
-// (tests/core/arrival_test.cpp: seeds 1-14 all but one program).
+// (tests/core/arrival_test.cpp: seeds 1-14 alike wherever no check lowered a corner).
 #pragma once
 
 #include <firtp/junction.hpp>
@@ -451,7 +451,7 @@ private:
     double max_width_ = 0.0;
     double context_span_ = 0.0;  // how far before `first` the last check needed its legs (s): context()'s guess
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
-    bool sized_ = false;       // every axis limits jerk: starts and stops are sized (sized())
+    bool sized_ = false;       // an axis limits jerk: starts and stops are sized (sized())
     // The lowest segment whose ramps' regime junction_caps() changed since the last replan (its
     // legs were planned for the old one); SIZE_MAX: none.
     std::size_t ramp_change_ = static_cast<std::size_t>(-1);
