@@ -212,36 +212,6 @@ double Lookahead::room_cap(std::size_t i, double alpha) const {
     return std::sqrt(seg_length(i) / alpha);
 }
 
-// Planned alone at one speed v (plan_segment), the block takes L/v between its steps' centres and
-// a step's width v alpha + t2 beyond them (half of each). Scaling the regime by k <= 1 (caps k h,
-// jerk time k t2: the same jerk) makes alpha = alpha0 / k: time(k) = L/v + v alpha0/k + k t2 with
-// v = min(feed, sqrt(L k / alpha0)) (room_cap). Its minimum over (0, 1] is at one of the two
-// pieces' own minima or where they meet. The tolerance's regime grows with the tolerance; a block
-// without corners does not need it, and a wider step made such a block slower (firtp_cliffs seed 7
-// program 74: +5 % with a 25 % larger tolerance).
-Lookahead::Regime Lookahead::alone_regime(std::size_t i, const Regime& dense) const {
-    const Segment& s = seg(i);
-    const double alpha0 = box(s.u, dense), t2 = dense.t2, length = seg_length(i);
-    const double feed = std::min(s.feed, s.feed_max);
-    if (!(alpha0 > 0.0) || !(t2 > 0.0) || !(length > 0.0) || !(feed > 0.0)) return dense;
-    const auto time = [&](double k) {
-        const double v = std::min(feed, std::sqrt(length * k / alpha0));
-        return length / v + v * alpha0 / k + k * t2;
-    };
-    const double meet = feed * feed * alpha0 / length;          // room-bound below, feed-bound above
-    const double room = std::cbrt(length * alpha0 / (t2 * t2));   // d/dk (2 sqrt(L alpha0 / k) + k t2) = 0
-    const double fed = std::sqrt(feed * alpha0 / t2);             // d/dk (v alpha0 / k + k t2) = 0
-    double best = 1.0;
-    for (const double k : {std::min(room, meet), std::max(fed, meet), meet})
-        if (k > 0.0 && k < 1.0 && time(k) < time(best)) best = k;
-    if (best == 1.0) return dense;
-    Regime r = dense;
-    r.t2 *= best;
-    for (int a = 0; a < limits_.axes; ++a)
-        if (std::isfinite(r.cap[a])) r.cap[a] *= best;
-    return r;
-}
-
 bool Lookahead::slower_long(std::size_t k, std::size_t i) const {
     return !seg(k).short_block && seg(k).feed_max < seg(i).feed_max;
 }
@@ -341,10 +311,6 @@ void Lookahead::classify(std::size_t i) {
     s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
               ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : sparse_;
-    // (A stop after it, not only the end of the blocks known so far: the next block would undo it.
-    // An exact stop stays: the block is planned as it will be, before the next one comes.)
-    if (s.dense && entry_is_stop(i) && (i + 1 < count_ || s.exact_stop) && s.kind == Kind::stop)
-        s.regime = alone_regime(i, dense);
     s.alpha = box(s.u, s.regime);
 }
 

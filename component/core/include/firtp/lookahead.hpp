@@ -270,9 +270,6 @@ private:
     double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
     double dense_estimate(std::size_t i) const;   // ... and planned dense
     double room_cap(std::size_t i, double alpha) const;  // dense i: highest c with c alpha <= L/c
-    // Dense block i between two stops: `dense` scaled down (caps and jerk time alike) to the fastest
-    // one-speed plan; no corner needs the tolerance's regime there.
-    Regime alone_regime(std::size_t i, const Regime& dense) const;
 
     // Passes.
     // From `last` down while the bounds change; returns the first segment whose bounds or flags
