@@ -149,6 +149,7 @@ struct TpCore::Impl {
 
     std::optional<Planner> planner;
     PlannerInput input;          // the override and pause the planner was last given (kept while aborting)
+    bool spindle_wait = false;   // a move waits for the spindle: the blocks planned end in a rest
     PlannerOutput output{};      // what the planner gave at the last period: the axes, an abort's end
     Pose pose{};                 // output.state.position
     Pose goal{};                 // end of the last accepted move
@@ -192,6 +193,7 @@ struct TpCore::Impl {
         p.period = period;
         p.tolerance_meaning = s.tolerance_meaning;
         p.queue_capacity = s.blocks;
+        if (s.task_cycle > 0.0) p.start_wait = std::min(p.start_wait, 3.0 * s.task_cycle + 2.0 * period);
         p.max_rate = max_rate;
         p.rate_reserve = s.rate_reserve;
         p.limits.axes = pose_axes;
@@ -298,6 +300,7 @@ struct TpCore::Impl {
     void plan(const CycleInputs& in) {
         stats.planned = 0;
         stats.plan_ns = 0;
+        spindle_wait = false;
         if (aborting) return;
         // Rebuilt as soon as nothing moves (not only when a move waits), so the first move of a
         // program does not wait for it.
@@ -310,7 +313,10 @@ struct TpCore::Impl {
             Move& m = move(plan_seq);
             if (plan_chord == 0) {
                 // A spindle that must be at speed: the tool rests before the move and it waits.
-                if (m.atspeed && (!planner->idle() || !in.spindle_at_speed)) break;
+                if (m.atspeed && (!planner->idle() || !in.spindle_at_speed)) {
+                    spindle_wait = true;
+                    break;
+                }
                 fix_speed(m);
             }
             Block b = chord_block(m, plan_chord);
@@ -582,6 +588,9 @@ void TpCore::run_cycle(const CycleInputs& in) {
         if (!I.aborting) {
             I.input.rate = std::clamp(scale_in, 0.0, top);
             I.input.hold = I.paused;
+            // Nothing follows the blocks planned until the spindle is at speed: they end the motion
+            // for now, and a start need not wait for more.
+            I.input.end_of_program = I.spindle_wait;
         }
         I.planner->update(I.input, I.output);
         I.pose = to_pose(I.output.state.position);

@@ -66,6 +66,10 @@ struct TpSettings {
     std::int64_t plan_budget_ns = defaults::tp_plan_budget_us * 1000;  // and only while planning took less than this (0: no time limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
     double max_chords = 1.0e6;         // an arc needing more is refused
+    // [TASK]CYCLE_TIME, s (0: unknown). While a program streams, LinuxCNC hands moves at most a task
+    // cycle or so apart: a start that waits longer for the moves after its own is at a point where
+    // LinuxCNC waits for motion to end (M3, M5, a lone MDI move), and starts.
+    double task_cycle = 0.0;
 };
 
 // What a tpAdd* call carries besides the geometry.

@@ -5,6 +5,7 @@
 #include <firtp/hal/module_number.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -59,6 +60,15 @@ IniJerk read_ini_jerk(const char* path) {
         }
     }
     return out;
+}
+
+double read_ini_task_cycle(const char* path) {
+    IniFile ini;
+    if (!ini.Open(path)) return 0.0;
+    const char* text = ini.Find("CYCLE_TIME", "TASK");
+    if (text == nullptr) return 0.0;
+    const std::optional<double> value = module_number(text);
+    return value && *value > 0.0 && std::isfinite(*value) ? *value : 0.0;
 }
 
 }  // namespace firtp::linuxcnc_tp

@@ -1,4 +1,5 @@
-// tp_ini: the jerk limit firtp_tp takes from the machine's INI, at load (rtapi_app_main) only.
+// tp_ini: what firtp_tp takes from the machine's INI, at load (rtapi_app_main) only: the jerk limit
+// and the task's cycle time.
 // LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK; so does
 // firtp_tp. TpCore applies one jerk limit to every axis, so the smallest value given is taken.
 // Built into the firtp_tp module only: it reads with LinuxCNC's own INI reader (liblinuxcncini).
@@ -18,5 +19,9 @@ struct IniJerk {
 // [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK for the letters L of [TRAJ]COORDINATES (X..W, all nine
 // without it) from the INI at `path`. 0 counts as not set, as in LinuxCNC master.
 IniJerk read_ini_jerk(const char* path);
+
+// [TASK]CYCLE_TIME in s from the INI at `path`; 0 where the file, the key or a positive number is
+// missing (firtp_tp then keeps the planner's own start wait).
+double read_ini_task_cycle(const char* path);
 
 }  // namespace firtp::linuxcnc_tp

@@ -123,6 +123,7 @@ struct Params {
     hal_s32_t max_blocks;
     hal_s32_t plan_budget_us;
     hal_s32_t arena_mb;
+    hal_float_t task_cycle;  // [TASK]CYCLE_TIME, s (0: unknown): a start waits at most 3 of them for more moves
 };
 
 int comp_id = -1;
@@ -282,6 +283,7 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     p->max_blocks = s.max_blocks_per_cycle;
     p->plan_budget_us = plan_budget_us;
     p->arena_mb = arena_mb;
+    p->task_cycle = s.task_cycle;
     int r = 0;
     r = r ? r : hal_param_float_newf(HAL_RO, &p->jerk, comp_id, "firtp_tp.jerk");
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->jerk_source, comp_id, "firtp_tp.jerk-source");
@@ -296,6 +298,7 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->max_blocks, comp_id, "firtp_tp.max-blocks");
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->plan_budget_us, comp_id, "firtp_tp.plan-budget-us");
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->arena_mb, comp_id, "firtp_tp.arena-mb");
+    r = r ? r : hal_param_float_newf(HAL_RO, &p->task_cycle, comp_id, "firtp_tp.task-cycle");
     return r;
 }
 
@@ -596,6 +599,8 @@ extern "C" int rtapi_app_main(void) {
         if (std::isnan(v) || v < 0.0) return fail("t1..t4 must be numbers of seconds >= 0");
     JerkSource source = jerk_default;
     if (!choose_jerk(s, source)) return fail("not loaded: the jerk limit");
+    if (const char* ini = std::getenv("INI_FILE_NAME"); ini != nullptr && *ini != '\0')
+        s.task_cycle = firtp::linuxcnc_tp::read_ini_task_cycle(ini);
     try {
         core = new TpCore(s);  // at load, never in the servo thread
     } catch (const std::exception& e) {
@@ -603,8 +608,9 @@ extern "C" int rtapi_app_main(void) {
     }
     if (make_pins() != 0) return fail("cannot create the firtp_tp.* pins");
     if (make_params(s, source) != 0) return fail("cannot create the firtp_tp.* params");
-    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: %d stages, t1=%s t2=%s (0: from the axis limits), tolerance %g, jerk %g\n",
-                    stages, t1 ? t1 : "0", t2 ? t2 : "0", s.default_tolerance, s.jerk);
+    rtapi_print_msg(RTAPI_MSG_INFO,
+                    "firtp_tp: %d stages, t1=%s t2=%s (0: from the axis limits), tolerance %g, jerk %g, task cycle %g s\n",
+                    stages, t1 ? t1 : "0", t2 ? t2 : "0", s.default_tolerance, s.jerk, s.task_cycle);
     hal_ready(comp_id);
     return 0;
 }

@@ -758,6 +758,51 @@ TEST(TpCore, AtSpeedMoveWaitsForTheSpindle) {
     EXPECT_EQ(m.samples.back().position, vec(pose(10, 0)));
 }
 
+// The moves before one that waits for the spindle end where the tool rests for it: the planner is
+// told so, and the first of them starts at once instead of waiting start_wait (50 ms) for moves
+// firtp_tp holds back (pcb2gcode's drill file in LinuxCNC: a 55 ms rest after M3, none in the
+// stock planner).
+TEST(TpCore, MovesBeforeAnAtSpeedMoveStartAtOnce) {
+    TpSettings s = diamond_settings();
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.jerk = 100000.0;
+    Machine m(s, 300.0, 5000.0);
+    m.in.spindle_at_speed = false;
+    m.line(pose(0, 0, 5), 300, 1, term_parabolic, 0.0, motion_traverse);
+    m.line(pose(10, 0, 5), 300, 2, term_parabolic, 0.0, motion_traverse);
+    m.line(pose(10, 0, 0), 50, 3);
+    m.program.back().move.atspeed = true;
+    for (int k = 0; k < 400; ++k) m.cycle();
+    const auto moving = [&](std::size_t k) { return m.samples[k].position != m.samples[0].position; };
+    std::size_t first = 0;
+    while (first < m.samples.size() && !moving(first)) ++first;
+    EXPECT_LE(first, 10u);  // 53 periods before: the start waited start_wait
+    EXPECT_EQ(m.samples.back().position, vec(pose(10, 0, 5)));  // at rest before the plunge
+    m.in.spindle_at_speed = true;
+    ASSERT_TRUE(m.run());
+    EXPECT_EQ(m.samples.back().position, vec(pose(10, 0, 0)));
+}
+
+// A lone move (MDI, or one between two M-codes LinuxCNC waits for motion at) starts once no more
+// moves came for three task cycles ([TASK]CYCLE_TIME, 1 ms here: 5 ms with two periods), not after
+// the planner's own start_wait of 50 ms (a 53 ms rest before each rapid of a laser program whose
+// M3 and M5 enclose every shape). Moves streamed one a period still start as one path.
+TEST(TpCore, ALoneMoveStartsAfterThreeTaskCycles) {
+    TpSettings s = diamond_settings();
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.jerk = 100000.0;
+    s.task_cycle = 0.001;
+    Machine m(s, 300.0, 5000.0);
+    m.line(pose(10, 0), 300, 1, term_parabolic, 0.0, motion_traverse);
+    for (int k = 0; k < 30; ++k) m.cycle();
+    std::size_t first = 0;
+    while (first < m.samples.size() && m.samples[first].position == m.samples[0].position) ++first;
+    EXPECT_LE(first, 8u);  // 52 with the planner's start_wait
+    EXPECT_GE(first, 5u);  // not before the wait
+    ASSERT_TRUE(m.run());
+    EXPECT_EQ(m.samples.back().position, vec(pose(10, 0)));
+}
+
 // The servo-thread calls allocate nothing once the planner is built.
 TEST(TpCore, AddsAndCyclesDoNotAllocate) {
     TpSettings s = diamond_settings();

@@ -7,13 +7,15 @@
 #   the same with jerk=5000                                5000, 1 (the override)
 #   [AXIS_Y]MAX_JERK = fast                                the load is refused, naming file, line and key
 # and without settings the defaults of firtp/defaults.hpp; meaning=contour sets firtp_tp.contour,
-# meaning=max is refused.
+# meaning=max is refused; [TASK]CYCLE_TIME 0.004 shows as firtp_tp.task-cycle.
 # Set-up: tests/linuxcnc/hal_session.sh.
 set -euo pipefail
 module=$1 moddir=$2
 source "$(cd "$(dirname "$0")/../linuxcnc" && pwd)/hal_session.sh"
 
 cat > "$work/machine.ini" << 'INI'
+[TASK]
+CYCLE_TIME = 0.004
 [TRAJ]
 COORDINATES = X Y
 MAX_LINEAR_JERK = 20000
@@ -24,7 +26,7 @@ MAX_JERK = 30000
 [AXIS_Z]
 MAX_JERK = 10
 INI
-sed '7s/.*/MAX_JERK = fast/' "$work/machine.ini" > "$work/bad.ini"  # [AXIS_Y]
+sed '9s/.*/MAX_JERK = fast/' "$work/machine.ini" > "$work/bad.ini"  # [AXIS_Y]
 chmod a+r "$work"/*.ini
 
 # One halrun session: loadrt firtp_tp ARGS, show its params; env INI_FILE_NAME=$1 (empty: unset).
@@ -69,7 +71,9 @@ echo "meaning=contour: firtp_tp.contour TRUE; meaning=max: refused"
 
 session_with "$work/machine.ini" "" || { cat "$work/halrun.log"; echo "FAIL: loadrt firtp_tp with the INI"; exit 1; }
 expect "INI" 20000 2
-grep -qF 'other values ([AXIS_X]MAX_JERK = 30000 (line 5), [AXIS_Y]MAX_JERK = 30000 (line 7)) are not applied' "$work/halrun.log" ||
+[ "$(param firtp_tp.task-cycle)" = 0.004 ] || { cat "$work/halrun.log"; echo "FAIL: [TASK]CYCLE_TIME 0.004 not read"; exit 1; }
+echo "INI: firtp_tp.task-cycle 0.004"
+grep -qF 'other values ([AXIS_X]MAX_JERK = 30000 (line 7), [AXIS_Y]MAX_JERK = 30000 (line 9)) are not applied' "$work/halrun.log" ||
   { cat "$work/halrun.log"; echo "FAIL: no message naming the axis jerks not applied"; exit 1; }
 grep -q 'AXIS_Z' "$work/halrun.log" && { echo "FAIL: [AXIS_Z] read although COORDINATES = X Y"; exit 1; }
 
@@ -77,6 +81,6 @@ session_with "$work/machine.ini" "jerk=5000" || { cat "$work/halrun.log"; echo "
 expect "INI and jerk=5000" 5000 1
 
 if session_with "$work/bad.ini" ""; then cat "$work/halrun.log"; echo "FAIL: a jerk of 'fast' was accepted"; exit 1; fi
-grep -qF "$work/bad.ini:7: [AXIS_Y]MAX_JERK = 'fast': not a number" "$work/halrun.log" ||
+grep -qF "$work/bad.ini:9: [AXIS_Y]MAX_JERK = 'fast': not a number" "$work/halrun.log" ||
   { cat "$work/halrun.log"; echo "FAIL: the refusal does not name file, line and key"; exit 1; }
-echo "bad INI: load refused: $(grep -oF "$work/bad.ini:7: [AXIS_Y]MAX_JERK = 'fast'" "$work/halrun.log" | head -1)"
+echo "bad INI: load refused: $(grep -oF "$work/bad.ini:9: [AXIS_Y]MAX_JERK = 'fast'" "$work/halrun.log" | head -1)"
