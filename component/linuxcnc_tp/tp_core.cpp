@@ -193,7 +193,7 @@ struct TpCore::Impl {
         p.period = period;
         p.tolerance_meaning = s.tolerance_meaning;
         p.queue_capacity = s.blocks;
-        if (s.task_cycle > 0.0) p.start_wait = std::min(p.start_wait, 3.0 * s.task_cycle + 2.0 * period);
+        if (s.task_cycle > 0.0) p.start_idle = 3.0 * s.task_cycle + 2.0 * period;
         p.max_rate = max_rate;
         p.rate_reserve = s.rate_reserve;
         p.limits.axes = pose_axes;

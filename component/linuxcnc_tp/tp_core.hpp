@@ -67,8 +67,8 @@ struct TpSettings {
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
     double max_chords = 1.0e6;         // an arc needing more is refused
     // [TASK]CYCLE_TIME, s (0: unknown). While a program streams, LinuxCNC hands moves at most a task
-    // cycle or so apart: a start that waits longer for the moves after its own is at a point where
-    // LinuxCNC waits for motion to end (M3, M5, a lone MDI move), and starts.
+    // cycle or so apart: where none came for three, LinuxCNC waits for motion to end (M3, M5, a lone
+    // MDI move), and a start waiting for more moves starts (PlannerParameters::start_idle).
     double task_cycle = 0.0;
 };
 

@@ -803,6 +803,27 @@ TEST(TpCore, ALoneMoveStartsAfterThreeTaskCycles) {
     EXPECT_EQ(m.samples.back().position, vec(pose(10, 0)));
 }
 
+// Streamed one a period, the chords of a circle (one run of dense blocks, whose start waits for the
+// run's end or start_wait) start as they did without the task cycle: moves keep coming.
+TEST(TpCore, AStreamedDenseRunStartsAsWithoutTheTaskCycle) {
+    auto samples = [](double task_cycle) {
+        TpSettings s = diamond_settings();
+        s.filter_times = {0.0, 0.0, 0.0, 0.0};
+        s.jerk = 100000.0;
+        s.task_cycle = task_cycle;
+        Machine m(s, 300.0, 5000.0);
+        for (int k = 1; k <= 180; ++k) {
+            const double a = 2.0 * std::numbers::pi * k / 360.0;
+            m.line(pose(20.0 * std::sin(a), 20.0 - 20.0 * std::cos(a)), 250, k, term_parabolic, 0.5);
+        }
+        EXPECT_TRUE(m.run());
+        return m.samples;
+    };
+    const std::vector<AxisState> without = samples(0.0), with = samples(0.001);
+    ASSERT_EQ(with.size(), without.size());
+    for (std::size_t k = 0; k < with.size(); ++k) ASSERT_EQ(with[k].position, without[k].position) << "period " << k;
+}
+
 // The servo-thread calls allocate nothing once the planner is built.
 TEST(TpCore, AddsAndCyclesDoNotAllocate) {
     TpSettings s = diamond_settings();

@@ -901,6 +901,7 @@ void Lookahead::open_batch() {
 }
 
 Result Lookahead::add(const Block& block, Planning when) {
+    last_add_tick_ = timeline_->now();
     if (when == Planning::now) plan_added();
     else if (!batch_.open) open_batch();
     const AxisVector delta = block.target - goal_;

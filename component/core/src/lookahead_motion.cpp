@@ -261,7 +261,9 @@ void Lookahead::commit() {
         if (next_is_start_) {
             if (held_ || retry_) return;  // (a resume not yet checked: the plan after the stop is not)
             if (waiting_since_ < 0) waiting_since_ = timeline_->now();
-            const bool stalled = static_cast<double>(timeline_->now() - waiting_since_) * period >= parameters_.start_wait;
+            const bool idle = parameters_.start_idle > 0.0 &&
+                              static_cast<double>(timeline_->now() - last_add_tick_) * period >= parameters_.start_idle;
+            const bool stalled = idle || static_cast<double>(timeline_->now() - waiting_since_) * period >= parameters_.start_wait;
             if (!final_for_start() && !stalled) return;
             waiting_since_ = -1;
         }

@@ -460,6 +460,7 @@ private:
     bool held_ = false;
     bool finished_ = false;
     std::int64_t waiting_since_ = -1;  // tick the first step of a start began to wait for the look-ahead
+    std::int64_t last_add_tick_ = 0;   // tick of the last add() (start_idle)
     // The next step, kept until the plan changes (next_due() finds it).
     mutable bool next_known_ = false;  // next_start_ holds for the plan as it is
     mutable bool next_is_start_ = false;

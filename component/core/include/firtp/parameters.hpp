@@ -57,8 +57,11 @@ struct PlannerParameters {
     MachineLimits limits;               // held at every sample, overlaps included (0 = not limited)
     double max_rate = defaults::max_feed_override;  // highest feed override (MAX_FEED_OVERRIDE): limits hold up to it
     double rate_reserve = defaults::rate_reserve;  // the paper's mode: share of a and j kept for its clock's rate ramps
-    // From rest, the first step waits at most this long (s) for the look-ahead to settle it.
+    // From rest, the first step waits at most this long (s) for the look-ahead to settle it, and
+    // (start_idle > 0) no longer than start_idle after the last block came: a caller that hands
+    // blocks as they come knows how long a pause in them means none follow for now.
     double start_wait = 0.05;
+    double start_idle = 0.0;
 };
 
 // What a plan at rate 1 may use. The paper's mode scales its clock for the override, so any rate
