@@ -2,7 +2,7 @@
 """Cycle time of five programs under LinuxCNC's planners and firtp_tp, in one run series, side by side.
 
     examples/linuxcnc/compare.py [--master TREE] [--module build/linuxcnc/firtp_tp.so]
-        [--check-tool build/bin/firtp-tp-check] [--readme README.md [--details docs/BENCHMARKS.md]]
+        [--check-tool build/bin/firtp-tp-check] [--readme README.md [--details docs/BENCHMARKS.md]] [--cam DIR]
 
 The programs (issue 13): examples/diamond.ngc (F15000 G64 P0.5), corner90.ngc (F3000 G64 P0.1),
 polygon360.ngc (a closed 360-gon, R20, 0.35 mm chords, F15000 G64 P0.5 Q0), cam_contour.ngc and
@@ -31,11 +31,17 @@ limit), then the detail table of every run and firtp_tp's own pins. Without --ma
 --readme the tables replace those between the markers in that file (with --details FILE, the
 detail tables go between the markers of FILE instead). One HAL session at a time; about
 5 minutes with --master, 2 without.
+
+--cam DIR adds real CAM programs (CAM_PROGRAMS from DIR, prepared as issue 13 ran them, and a
+laser-style program written here), about 4 minutes more; their table goes between the
+'compare.py cam' markers of --readme. --cam-only runs and rewrites only those (the five programs'
+table keeps its S-curve columns from a --master run).
 """
 import argparse
 import os
 import re
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -51,6 +57,43 @@ PROGRAMS = [
     ("cam_contour.ngc", "cam_contour: 2,603 segments, F3000 G64 P0.02 Q0"),
     ("arcs.ngc", "arcs: G2/G3 in 3 planes, helix, F2400 G64 P0.02"),
 ]
+
+# --cam DIR: real CAM programs (pcb2gcode's testing/gerbv_example outputs, GPL-3.0: not in this
+# repository), prepared as issue 13 measured them: G64 P0.02 after the first G90, pauses, tool
+# changes and dwells removed; and a laser-style program written here (LASER).
+CAM_PROGRAMS = [
+    ("pcb2gcode__milldrill.ngc", "pcb2gcode drill file (multivibrator milldrill.ngc)"),
+    ("pcb2gcode__back.ngc", "pcb2gcode isolation milling, 21,624 moves (D1MiniGSR back.ngc)"),
+]
+LASER = "laser-style: M3/M5 around each of 20 squares, F1200 G64 P0.05"
+CAM_BEGIN, CAM_END = "<!-- compare.py cam: begin -->", "<!-- compare.py cam: end -->"
+
+
+def prepare_cam(src, dst):
+    """src as issue 13 ran it: G64 P0.02 after its first G90; no M0, M1, M6, T, G04."""
+    out, placed = [], False
+    for line in open(src):
+        word = line.lstrip().upper()
+        if re.match(r"(M0?0|M0?1|M0?6|T\d|G0?4)(\D|$)", word):
+            continue
+        out.append(line)
+        if not placed and re.match(r"G90(\D|$)", word):
+            out.append("G64 P0.02\n")
+            placed = True
+    open(dst, "w").write("".join(out))
+
+
+def write_laser(dst):
+    """20 squares of 8 mm, the spindle (a laser) on around each: LinuxCNC waits for motion at M3 and M5."""
+    lines = ["G21 G90 G64 P0.05", "F1200"]
+    for i in range(20):
+        x, y = (i % 5) * 12.0, (i // 5) * 12.0
+        lines += ["G0 X%.3f Y%.3f" % (x, y), "M3 S1000"]
+        lines += ["G1 X%.3f Y%.3f" % p for p in ((x + 8, y), (x + 8, y + 8), (x, y + 8), (x, y))]
+        lines.append("M5")
+    lines += ["G0 X0 Y0", "M2"]
+    open(dst, "w").write("\n".join(lines) + "\n")
+
 
 # The paper's filters on the diamond (firtp_tp only; detail table).
 PAPER = ("diamond.ngc", "diamond, the paper's filters t1=0.148 t2=0.089", "t1=0.148 t2=0.089 jerk=100000 tolerance=0.05")
@@ -87,9 +130,13 @@ END = "<!-- compare.py: end -->"
 
 
 def g64_p(path):
-    """The program's first G64 P (its tolerance)."""
-    m = re.search(r"G64\s*P\s*([0-9.]+)", open(path).read(), re.I)
-    return float(m.group(1)) if m else None
+    """The program's first G64 P (its tolerance), in mm (G20 before it: inches)."""
+    text = open(path).read()
+    m = re.search(r"G64\s*P\s*([0-9.]+)", text, re.I)
+    if not m:
+        return None
+    inches = re.search(r"\bG20(\D|$)", text[:m.start()], re.I | re.M) is not None
+    return float(m.group(1)) * (25.4 if inches else 1.0)
 
 
 def good(report):
@@ -176,6 +223,12 @@ def main():
                         help="with --readme: the detail tables (every run, firtp_tp's pins) go between the markers "
                              "in FILE instead (docs/BENCHMARKS.md), the README keeps the summary")
     parser.add_argument("--no-detail", action="store_true", help="skip the paper's-filters run and the detail tables")
+    parser.add_argument("--cam", metavar="DIR",
+                        help="also real CAM programs: pcb2gcode__milldrill.ngc and pcb2gcode__back.ngc from DIR (as "
+                             "../shared/corpus names them), and a laser-style program; their table goes between the "
+                             "'compare.py cam' markers of --readme")
+    parser.add_argument("--cam-only", action="store_true",
+                        help="with --cam: only the CAM programs (--readme then rewrites only their table)")
     a = parser.parse_args()
 
     began = time.time()
@@ -196,6 +249,7 @@ def main():
     extra = []
     notes = []
     results = []
+    cam_results = []
 
     def one(path, label, name, how, params=None):
         p = g64_p(path)
@@ -223,15 +277,34 @@ def main():
                 t["planning"]["p99_us"], t["planning"]["max_us"], t["most_blocks_planned_in_a_period"]))
         return report
 
+    if a.cam_only and not a.cam:
+        parser.error("--cam-only needs --cam DIR")
     try:
-        for program, label in PROGRAMS:
+        for program, label in ([] if a.cam_only else PROGRAMS):
             path = os.path.join(EXAMPLES, program)
             r = {name: one(path, label, title, how) for name, title, how in planners}
             results.append((label, g64_p(path), r, program in ("diamond.ngc", "corner90.ngc")))
-        if not a.no_detail:
+        if not a.no_detail and not a.cam_only:
             program, label, params = PAPER
             one(os.path.join(EXAMPLES, program), label, "firtp_tp " + params.split(" tolerance")[0], PLANNERS[2][2],
                 params)
+        if a.cam:
+            scratch = tempfile.mkdtemp(prefix="firtp-compare-cam.")
+            os.chmod(scratch, 0o755)
+            cams = []
+            for program, label in CAM_PROGRAMS:
+                src = os.path.join(a.cam, program)
+                if not os.path.exists(src):
+                    print("--cam: %s not found" % src)
+                    return 1
+                cams.append((os.path.join(scratch, program), label))
+                prepare_cam(src, cams[-1][0])
+            cams.append((os.path.join(scratch, "laser.ngc"), LASER))
+            write_laser(cams[-1][0])
+            for path, label in cams:
+                os.chmod(path, 0o644)
+                r = {name: one(path, label, title, how) for name, title, how in planners}
+                cam_results.append((label, g64_p(path), r))
     except run.Skip as e:
         print("SKIPPED: %s" % e)
         return run.SKIP
@@ -251,6 +324,23 @@ def main():
             errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
         checks += targets(label, p, r, scurve, corners)
 
+    cam_table = []
+    if cam_results:
+        cam_table = ["| program | stock 2.9 | firtp_tp jerk=5e6 | ratio | firtp_tp jerk=1e5 | ratio "
+                     "| master S-curve jerk=1e5 | jerk=5e6 | firtp_tp 5e6: corner / contour error; acc; jerk "
+                     "| firtp_tp 1e5: corner / contour error; acc; jerk |",
+                     "|---|---|---|---|---|---|---|---|---|---|"]
+        for label, p, r in cam_results:
+            stock = r.get("stock")
+            cam_table.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                label, seconds(stock), seconds(r.get("firtp_5e6")), ratio(r.get("firtp_5e6"), stock),
+                seconds(r.get("firtp_1e5")), ratio(r.get("firtp_1e5"), stock),
+                seconds(r.get("scurve_1e5")) if scurve else "-", seconds(r.get("scurve_5e6")) if scurve else "-",
+                errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
+        cam_table = ["Real CAM programs through LinuxCNC's interpreter, the same machine and run series (%s; "
+                     "`--cam`: G64 P0.02 after the first G90, M0, M1, M6, T and G04 removed; the drill file is in "
+                     "inches, its P0.02 is 0.508 mm; the isolation milling sets its own G64 P0.01 in mm after it):" % time.strftime("%Y-%m-%d"), ""] + cam_table
+
     elapsed = time.time() - began
     text = ["Cycle times, one run series (%s; %.0f s); ratios to the stock planner; firtp_tp's largest corner "
             "and contour errors against the program's G64 P, peak axis acceleration (mm/s²) and jerk (mm/s³) "
@@ -269,17 +359,22 @@ def main():
     table = "\n".join(text)
     print()
     print(table)
+    if cam_table:
+        print()
+        print("\n".join(cam_table))
     if a.details:
         print()
         print("\n".join(details))
-    for path, body in ((a.readme, table), (a.details, "\n".join(details))):
+    for path, body, begin, end in ((None if a.cam_only else a.readme, table, BEGIN, END),
+                                   (None if a.cam_only else a.details, "\n".join(details), BEGIN, END),
+                                   (a.readme if cam_table else None, "\n".join(cam_table), CAM_BEGIN, CAM_END)):
         if not path or (path == a.details and not details):
             continue
         old = open(path).read()
-        new, n = re.subn(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: BEGIN + "\n" + body + "\n" + END, old,
+        new, n = re.subn(re.escape(begin) + ".*?" + re.escape(end), lambda m: begin + "\n" + body + "\n" + end, old,
                          flags=re.S)
         if n != 1:
-            print("%s has no %s ... %s markers" % (path, BEGIN, END))
+            print("%s has no %s ... %s markers" % (path, begin, end))
             return 1
         open(path, "w").write(new)
     return 0
