@@ -175,6 +175,22 @@ def detail_row(label, planner, report):
         ctl["median_us"], ctl["p99_us"], ctl["max_us"], cmd["p99_us"], cmd["max_us"])
 
 
+def cycle_table(rows, scurve):
+    """The cycle-time table of (label, G64 P, {planner: report}) rows: ratios to the stock planner."""
+    table = ["| program | stock 2.9 | firtp_tp jerk=5e6 | ratio | firtp_tp jerk=1e5 | ratio "
+             "| master S-curve jerk=1e5 | jerk=5e6 | firtp_tp 5e6: corner / contour error; acc; jerk "
+             "| firtp_tp 1e5: corner / contour error; acc; jerk |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for label, p, r in rows:
+        stock = r.get("stock")
+        table.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            label, seconds(stock), seconds(r.get("firtp_5e6")), ratio(r.get("firtp_5e6"), stock),
+            seconds(r.get("firtp_1e5")), ratio(r.get("firtp_1e5"), stock),
+            seconds(r.get("scurve_1e5")) if scurve else "-", seconds(r.get("scurve_5e6")) if scurve else "-",
+            errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
+    return table
+
+
 def targets(label, p, r, scurve, corners):
     """Issue 13's targets for one program, as lines of text."""
     stock, f5, f1, s1 = r.get("stock"), r.get("firtp_5e6"), r.get("firtp_1e5"), r.get("scurve_1e5")
@@ -310,36 +326,17 @@ def main():
         return run.SKIP
 
     scurve = master is not None
-    main_table = ["| program | stock 2.9 | firtp_tp jerk=5e6 | ratio | firtp_tp jerk=1e5 | ratio "
-                  "| master S-curve jerk=1e5 | jerk=5e6 | firtp_tp 5e6: corner / contour error; acc; jerk "
-                  "| firtp_tp 1e5: corner / contour error; acc; jerk |",
-                  "|---|---|---|---|---|---|---|---|---|---|"]
+    main_table = cycle_table([(label, p, r) for label, p, r, _ in results], scurve)
     checks = []
     for label, p, r, corners in results:
-        stock = r.get("stock")
-        main_table.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            label, seconds(stock), seconds(r.get("firtp_5e6")), ratio(r.get("firtp_5e6"), stock),
-            seconds(r.get("firtp_1e5")), ratio(r.get("firtp_1e5"), stock),
-            seconds(r.get("scurve_1e5")) if scurve else "-", seconds(r.get("scurve_5e6")) if scurve else "-",
-            errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
         checks += targets(label, p, r, scurve, corners)
 
     cam_table = []
     if cam_results:
-        cam_table = ["| program | stock 2.9 | firtp_tp jerk=5e6 | ratio | firtp_tp jerk=1e5 | ratio "
-                     "| master S-curve jerk=1e5 | jerk=5e6 | firtp_tp 5e6: corner / contour error; acc; jerk "
-                     "| firtp_tp 1e5: corner / contour error; acc; jerk |",
-                     "|---|---|---|---|---|---|---|---|---|---|"]
-        for label, p, r in cam_results:
-            stock = r.get("stock")
-            cam_table.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-                label, seconds(stock), seconds(r.get("firtp_5e6")), ratio(r.get("firtp_5e6"), stock),
-                seconds(r.get("firtp_1e5")), ratio(r.get("firtp_1e5"), stock),
-                seconds(r.get("scurve_1e5")) if scurve else "-", seconds(r.get("scurve_5e6")) if scurve else "-",
-                errors_and_peaks(r.get("firtp_5e6"), p), errors_and_peaks(r.get("firtp_1e5"), p)))
         cam_table = ["Real CAM programs through LinuxCNC's interpreter, the same machine and run series (%s; "
                      "`--cam`: G64 P0.02 after the first G90, M0, M1, M6, T and G04 removed; the drill file is in "
-                     "inches, its P0.02 is 0.508 mm; the isolation milling sets its own G64 P0.01 in mm after it):" % time.strftime("%Y-%m-%d"), ""] + cam_table
+                     "inches, its P0.02 is 0.508 mm; the isolation milling sets its own G64 P0.01 in mm after it):"
+                     % time.strftime("%Y-%m-%d"), ""] + cycle_table(cam_results, scurve)
 
     elapsed = time.time() - began
     text = ["Cycle times, one run series (%s; %.0f s); ratios to the stock planner; firtp_tp's largest corner "
