@@ -5,7 +5,7 @@
 // Known, and left out: programs where a check lowered a corner in either run. A check of the path
 // known so far can refuse what the whole program's check passes, and the reverse (seed 5 program
 // 110: a corner the whole program passes at 0.07 mm/s became a forced stop when fed, after the
-// start froze at a speed the whole program's checks had lowered). Seeds 1-14 at 1 and 2 blocks a
+// start froze at a speed the whole program's checks had lowered). Seeds 1-20 at 1 and 2 blocks a
 // period give the same samples on every other program. Other seeds:
 //   FIRTP_RANDOM_SEED=8 core_tests --gtest_filter='Arrival.*'
 #include "support/random_machine.hpp"

@@ -28,7 +28,7 @@
 // or when the motion would otherwise have to start late. So the motion does not depend on when
 // blocks arrive, only on which, but where a later check refuses what the start has already
 // committed to, or the block under way is planned again at another moment
-// (tests/core/arrival_test.cpp: seeds 1-14 alike wherever no check lowered a corner).
+// (tests/core/arrival_test.cpp: seeds 1-20 alike wherever no check lowered a corner).
 #pragma once
 
 #include <firtp/junction.hpp>
