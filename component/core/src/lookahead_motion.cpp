@@ -576,9 +576,11 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
                             f.derivative == lowered_for.derivative && near(f.time, lowered_for.time) && near(f.value, lowered_for.value);
         if (futile) seg(lowered).learned_cap = lowered_cap;
         lowered = count_;
+        // Nothing left to lower: what is kept instead depends on who asked.
+        const bool no_plan = futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_;
         // A batch with no plan short of the last resort: undone (plan_added).
-        if (undoable && (futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) return false;
-        if (fallback && (futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_)) {
+        if (undoable && no_plan) return false;
+        if (fallback && no_plan) {
             // No plan after the hold's or the resume's change passes: the accepted one goes on
             // (never an unchecked one) and the change is tried again at the next tick, from the
             // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
@@ -599,7 +601,7 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
             for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
             saved_all = true;
         }
-        if (bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_) {
+        if (no_plan) {  // (futile only where there is a fallback: it returned above)
             // Keep the plan accepted before (it stopped where the path ended then) and start the
             // newest block from rest after it. Also where the block under way cannot take the new
             // plan (front_unfit): restoring the accepted plan alone left the newest block unplanned,
