@@ -149,7 +149,6 @@ struct TpCore::Impl {
 
     std::optional<Planner> planner;
     PlannerInput input;          // the override and pause the planner was last given (kept while aborting)
-    bool spindle_wait = false;   // a move waits for the spindle: the blocks planned end in a rest
     PlannerOutput output{};      // what the planner gave at the last period: the axes, an abort's end
     Pose pose{};                 // output.state.position
     Pose goal{};                 // end of the last accepted move
@@ -297,15 +296,17 @@ struct TpCore::Impl {
 
     std::int64_t now_ns() const { return s.clock_ns != nullptr ? s.clock_ns() : 0; }
 
-    void plan(const CycleInputs& in) {
+    // Plans pending moves within the period's budget; true where the next one waits for the spindle
+    // (the blocks planned then end in a rest).
+    bool plan(const CycleInputs& in) {
         stats.planned = 0;
         stats.plan_ns = 0;
-        spindle_wait = false;
-        if (aborting) return;
+        if (aborting) return false;
         // Rebuilt as soon as nothing moves (not only when a move waits), so the first move of a
         // program does not wait for it.
         if ((dirty || !built()) && plan_chord == 0 && (!built() || planner->idle())) rebuild();
-        if (plan_seq == next_seq || !built()) return;
+        if (plan_seq == next_seq || !built()) return false;
+        bool spindle_wait = false;
         const bool timed = s.plan_budget_ns > 0 && s.clock_ns != nullptr;
         const std::int64_t begin = now_ns();
         while (plan_seq < next_seq && planner->free() > 0 && stats.planned < s.max_blocks_per_cycle &&
@@ -337,6 +338,7 @@ struct TpCore::Impl {
             }
         }
         if (s.clock_ns != nullptr) stats.plan_ns = now_ns() - begin;
+        return spindle_wait;
     }
 
     void apply_outputs(std::int64_t upto) {
@@ -580,7 +582,7 @@ void TpCore::run_cycle(const CycleInputs& in) {
         I.max_rate = std::max(in.max_feed_scale, 1.0);
         I.dirty = true;
     }
-    I.plan(in);  // may rebuild the planner (and change built_rate): the rate is set after it
+    const bool spindle_wait = I.plan(in);  // may rebuild the planner (and change built_rate): the rate is set after it
     if (I.built()) {
         const double top = std::min(std::isfinite(in.max_feed_scale) ? std::max(in.max_feed_scale, 0.0) : 1.0,
                                     I.built_rate);
@@ -590,7 +592,7 @@ void TpCore::run_cycle(const CycleInputs& in) {
             I.input.hold = I.paused;
             // Nothing follows the blocks planned until the spindle is at speed: they end the motion
             // for now, and a start need not wait for more.
-            I.input.end_of_program = I.spindle_wait;
+            I.input.end_of_program = spindle_wait;
         }
         I.planner->update(I.input, I.output);
         I.pose = to_pose(I.output.state.position);
