@@ -302,8 +302,9 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     return r;
 }
 
-// jerk=, else the INI's jerk keys, else TpSettings' default; false (reported) on a bad value.
-bool choose_jerk(firtp::linuxcnc_tp::TpSettings& s, JerkSource& source) {
+// jerk=, else the jerk keys of `ini` (nullptr: none), else TpSettings' default; false (reported)
+// on a bad value.
+bool choose_jerk(firtp::linuxcnc_tp::TpSettings& s, JerkSource& source, const char* ini) {
     if (jerk != nullptr && *jerk != '\0') {
         s.jerk = number(jerk, s.jerk);
         source = jerk_parameter;
@@ -314,8 +315,7 @@ bool choose_jerk(firtp::linuxcnc_tp::TpSettings& s, JerkSource& source) {
         return true;
     }
     source = jerk_default;
-    const char* ini = std::getenv("INI_FILE_NAME");  // the linuxcnc launcher's; unset under plain halrun
-    if (ini == nullptr || *ini == '\0') return true;
+    if (ini == nullptr) return true;
     const firtp::linuxcnc_tp::IniJerk found = firtp::linuxcnc_tp::read_ini_jerk(ini);
     if (!found.error.empty()) {
         rtapi_print_msg(RTAPI_MSG_ERR, "firtp_tp: jerk limit: %s\n", found.error.c_str());
@@ -598,9 +598,10 @@ extern "C" int rtapi_app_main(void) {
     for (double v : s.filter_times)
         if (std::isnan(v) || v < 0.0) return fail("t1..t4 must be numbers of seconds >= 0");
     JerkSource source = jerk_default;
-    if (!choose_jerk(s, source)) return fail("not loaded: the jerk limit");
-    if (const char* ini = std::getenv("INI_FILE_NAME"); ini != nullptr && *ini != '\0')
-        s.task_cycle = firtp::linuxcnc_tp::read_ini_task_cycle(ini);
+    const char* ini = std::getenv("INI_FILE_NAME");  // the linuxcnc launcher's; unset under plain halrun
+    if (ini != nullptr && *ini == '\0') ini = nullptr;
+    if (!choose_jerk(s, source, ini)) return fail("not loaded: the jerk limit");
+    if (ini != nullptr) s.task_cycle = firtp::linuxcnc_tp::read_ini_task_cycle(ini);
     try {
         core = new TpCore(s);  // at load, never in the servo thread
     } catch (const std::exception& e) {
