@@ -53,6 +53,14 @@ TpSettings diamond_settings() {
     return s;
 }
 
+// Smoothing at the machine's limits (no fixed chain), jerk 1e5 on every axis.
+TpSettings limits_settings() {
+    TpSettings s = diamond_settings();
+    s.filter_times = {0.0, 0.0, 0.0, 0.0};
+    s.jerk = 100000.0;
+    return s;
+}
+
 Pose limits(double value, int axes = 3) {
     Pose p{};
     for (int i = 0; i < axes; ++i) p[static_cast<std::size_t>(i)] = value;
@@ -584,9 +592,7 @@ TEST(TpCore, NoFiltersWithoutLimitsOrTimes) {
 // Without t1 every move is smoothed at the axis limits LinuxCNC sends after creation: a lone
 // move starts and stops on the jerk-limited S-curve of its own step (sized_kernel, kernel.hpp).
 TEST(TpCore, LimitsSentAfterCreationSmoothEachMoveAtThem) {
-    TpSettings s = diamond_settings();
-    s.filter_times = {0.0, 0.0, 0.0, 0.0};
-    s.jerk = 100000.0;
+    TpSettings s = limits_settings();
     Machine m(s, 300.0, 5000.0);
     m.line(pose(100, 0), 200, 1, term_exact);
     ASSERT_TRUE(m.run());
@@ -763,9 +769,7 @@ TEST(TpCore, AtSpeedMoveWaitsForTheSpindle) {
 // firtp_tp holds back (pcb2gcode's drill file in LinuxCNC: a 55 ms rest after M3, none in the
 // stock planner).
 TEST(TpCore, MovesBeforeAnAtSpeedMoveStartAtOnce) {
-    TpSettings s = diamond_settings();
-    s.filter_times = {0.0, 0.0, 0.0, 0.0};
-    s.jerk = 100000.0;
+    TpSettings s = limits_settings();
     Machine m(s, 300.0, 5000.0);
     m.in.spindle_at_speed = false;
     m.line(pose(0, 0, 5), 300, 1, term_parabolic, 0.0, motion_traverse);
@@ -788,9 +792,7 @@ TEST(TpCore, MovesBeforeAnAtSpeedMoveStartAtOnce) {
 // the planner's own start_wait of 50 ms (a 53 ms rest before each rapid of a laser program whose
 // M3 and M5 enclose every shape). Moves streamed one a period still start as one path.
 TEST(TpCore, ALoneMoveStartsAfterThreeTaskCycles) {
-    TpSettings s = diamond_settings();
-    s.filter_times = {0.0, 0.0, 0.0, 0.0};
-    s.jerk = 100000.0;
+    TpSettings s = limits_settings();
     s.task_cycle = 0.001;
     Machine m(s, 300.0, 5000.0);
     m.line(pose(10, 0), 300, 1, term_parabolic, 0.0, motion_traverse);
@@ -807,9 +809,7 @@ TEST(TpCore, ALoneMoveStartsAfterThreeTaskCycles) {
 // run's end or start_wait) start as they did without the task cycle: moves keep coming.
 TEST(TpCore, AStreamedDenseRunStartsAsWithoutTheTaskCycle) {
     auto samples = [](double task_cycle) {
-        TpSettings s = diamond_settings();
-        s.filter_times = {0.0, 0.0, 0.0, 0.0};
-        s.jerk = 100000.0;
+        TpSettings s = limits_settings();
         s.task_cycle = task_cycle;
         Machine m(s, 300.0, 5000.0);
         for (int k = 1; k <= 180; ++k) {
