@@ -1,12 +1,15 @@
 // A servo period that changes the feed override: its cost against the blocks waiting.
 //
-//   firtp_worst_override [--depth 256] [--ticks 200000] [--every 20] [--seed 1] [--json]
+//   firtp_worst_override [--depth 256] [--ticks 200000] [--every 20] [--seed 1] [--chords] [--json]
 //
 // Machine and moves as firtp_worst_tick (every axis 300 mm/s, 5000 mm/s^2, 1e5 mm/s^3, highest
-// override 150 %), the queue kept `--depth` blocks deep. Every `--every` periods the operator
+// override 150 %), the queue kept `--depth` blocks deep. --chords: a dense path instead, round and
+// round a circle of R20 in 0.35 mm chords at 300 mm/s, G64 P0.5 (examples/polygon360.ngc's),
+// where the motion's stop spans the most blocks. Every `--every` periods the operator
 // turns the override: half the time a knob's step (+-5 %), else a jump anywhere in 10-150 %.
 // Each update() is timed with this thread's CPU clock; the periods with a change and those
-// without are reported apart, with how many took over 1 ms (the servo period). At the end the
+// without are reported apart, with how many took over 1 ms (the servo period), and each add()
+// (the blocks that refill the queue come between periods) likewise. At the end the
 // queue drains and the output must rest exactly on the last command; exit status 1 otherwise.
 #include "bench_stats.hpp"
 #include "random_moves.hpp"
@@ -14,6 +17,7 @@
 #include <firtp/planner.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -23,6 +27,27 @@ using namespace firtp;
 using namespace firtp::bench;
 
 namespace {
+
+// examples/polygon360.ngc's chords, without end.
+class Chords {
+public:
+    Block next() {
+        ++count_;
+        const double angle = 2.0 * M_PI * static_cast<double>(count_) / 360.0;
+        Block b;
+        b.target = AxisVector::Zero();
+        b.target[0] = 20.0 * std::cos(angle) - 20.0;
+        b.target[1] = 20.0 * std::sin(angle);
+        b.feed = 300.0;
+        b.tolerance = 0.5;
+        b.line = count_;
+        return b;
+    }
+    std::int64_t count() const { return count_; }
+
+private:
+    std::int64_t count_ = 0;
+};
 
 struct Periods {
     Histogram cpu{1000, 20'000'000};
@@ -47,16 +72,17 @@ struct Periods {
 int main(int argc, char** argv) {
     long long ticks = 200'000, depth = 256, every = 20;
     std::uint64_t seed = 1;
-    bool json = false;
+    bool json = false, chords = false;
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--json")) json = true;
+        else if (!std::strcmp(argv[i], "--chords")) chords = true;
         else if (!std::strcmp(argv[i], "--ticks") && has_value) ticks = std::atoll(argv[++i]);
         else if (!std::strcmp(argv[i], "--depth") && has_value) depth = std::atoll(argv[++i]);
         else if (!std::strcmp(argv[i], "--every") && has_value) every = std::atoll(argv[++i]);
         else if (!std::strcmp(argv[i], "--seed") && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: %s [--depth N] [--ticks N] [--every N] [--seed S] [--json]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--depth N] [--ticks N] [--every N] [--seed S] [--chords] [--json]\n", argv[0]);
             return 2;
         }
     }
@@ -71,19 +97,25 @@ int main(int argc, char** argv) {
     parameters.limits.axes = 3;
     for (int a = 0; a < 3; ++a) parameters.limits.axis[a] = {300.0, 5000.0, 1e5};
     Planner planner(parameters, AxisVector::Zero());
-    RandomMoves moves(3, seed);
+    RandomMoves random_moves(3, seed);
+    Chords chord_moves;
+    const auto next_move = [&] { return chords ? chord_moves.next() : random_moves.next(); };
+    const auto moves_count = [&] { return chords ? chord_moves.count() : random_moves.count(); };
     std::mt19937_64 knob(seed + 1000);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
 
-    Periods changed, steady;
+    Periods changed, steady, adds;
     PlannerInput in;
     PlannerOutput out;
     AxisVector last_target = AxisVector::Zero();
     std::int64_t changes = 0;
     for (long long k = 0; k < ticks; ++k) {
-        while (planner.free() > 0) {  // (blocks planned between periods, not timed)
-            const Block b = moves.next();
-            if (refused(planner.add(b))) {
+        while (planner.free() > 0) {  // (between periods, each add timed apart)
+            const Block b = next_move();
+            const std::int64_t a0 = thread_cpu_ns();
+            const Result added = planner.add(b);
+            adds.add(thread_cpu_ns() - a0);
+            if (refused(added)) {
                 std::fprintf(stderr, "block %lld refused\n", static_cast<long long>(b.line));
                 return 1;
             }
@@ -109,16 +141,17 @@ int main(int argc, char** argv) {
 
     if (json) {
         std::printf("{\"depth\":%lld,\"ticks\":%lld,\"changes\":%lld,\"blocks\":%lld,\"checks\":%llu,\"end_exact\":%s,"
-                    "\"end_period\":%lld,\"changed\":%s,\"steady\":%s}\n",
-                    depth, ticks, static_cast<long long>(changes), static_cast<long long>(moves.count()),
+                    "\"end_period\":%lld,\"changed\":%s,\"steady\":%s,\"adds\":%s}\n",
+                    depth, ticks, static_cast<long long>(changes), static_cast<long long>(moves_count()),
                     static_cast<unsigned long long>(checks), exact ? "true" : "false", end_period, changed.json().c_str(),
-                    steady.json().c_str());
+                    steady.json().c_str(), adds.json().c_str());
     } else {
         std::printf("depth %lld: %lld periods, %lld override changes, %lld blocks, %llu checks\n", depth, ticks,
-                    static_cast<long long>(changes), static_cast<long long>(moves.count()),
+                    static_cast<long long>(changes), static_cast<long long>(moves_count()),
                     static_cast<unsigned long long>(checks));
         changed.print("with a change");
         steady.print("without");
+        adds.print("adds");
         std::printf("  end: %s, at rest from period %lld\n", exact ? "exactly on the last command" : "NOT on the last command",
                     end_period);
     }
