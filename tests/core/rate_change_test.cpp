@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -39,6 +40,26 @@ std::vector<Block> zig_zag_program(int blocks) {
         b.tolerance = 0.05;
         b.termination = (i + 1) % 40 == 0 ? Termination::exact_stop : Termination::blend;
         b.line = i + 1;
+        program.push_back(b);
+    }
+    return program;
+}
+
+// examples/polygon360.ngc's circle of R20 in 0.35 mm chords, F 300 mm/s, G64 P0.5, rising 0.05
+// mm a turn so the measurement never meets the path again: a dense path, whose stop spans the most
+// blocks.
+std::vector<Block> helix_chords(int blocks) {
+    std::vector<Block> program;
+    for (int i = 1; i <= blocks; ++i) {
+        const double angle = 2.0 * M_PI * i / 360.0;
+        Block b;
+        b.target = AxisVector::Zero();
+        b.target[0] = 20.0 * std::cos(angle) - 20.0;
+        b.target[1] = 20.0 * std::sin(angle);
+        b.target[2] = 0.05 * i / 360.0;
+        b.feed = 300.0;
+        b.tolerance = 0.5;
+        b.line = i;
         program.push_back(b);
     }
     return program;
@@ -127,3 +148,60 @@ TEST(RateChange, AnOverrideAndBackDoesNotLeaveTheToolCrawling) { check_deep_queu
 // retry lowered that corner 12 times more, and the program never ended. Lowering that does not
 // touch the failure is now undone and ends the try.
 TEST(RateChange, ARetriedChangeDoesNotLowerACornerThatCannotMendIt) { check_deep_queue(77, 0, 51); }
+
+// A change planned the whole queue again: 10 ms with 4096 blocks waiting (firtp_worst_override).
+// Now it plans the blocks the motion can reach before the rest rejoin, as the motion uses the
+// window up, each as a block arriving. Counted in segment plans, not timed.
+TEST(RateChange, AChangePlansTheBlocksWithinReachNotTheWholeQueue) {
+    PlannerParameters machine = test::builtin_machine();
+    machine.queue_capacity = 4096;
+    machine.max_rate = 1.5;
+    const std::vector<Block> program = helix_chords(3600);
+    Planner planner(machine, AxisVector::Zero());
+    for (const Block& b : program) ASSERT_EQ(planner.add(b), Result::ok);
+    planner.finish();
+    AxisState s;
+    for (int k = 0; k < 300; ++k) planner.tick(s);
+    ASSERT_GT(s.velocity.norm(), 100.0);  // under way, 3,300 blocks waiting
+    const std::uint64_t before = planner.stats().segments_planned, rejoined = planner.stats().rejoined;
+    planner.set_rate(0.5);
+    const std::uint64_t planned = planner.stats().segments_planned - before;
+    std::printf("a change with %zu blocks waiting planned %llu segments\n", planner.depth(),
+                static_cast<unsigned long long>(planned));
+    EXPECT_LT(planned, 600u);
+    // The blocks left out rejoin as the motion goes on, every one of them.
+    for (int k = 0; k < 100; ++k) planner.tick(s);
+    EXPECT_GT(planner.stats().rejoined, rejoined);
+    while (!planner.idle()) planner.tick(s);
+    EXPECT_EQ(s.position, program.back().target);
+}
+
+// The same path measured: limits, corners and end with a change, a hold and a resume while
+// thousands of blocks wait (the hold's split moves the segments before it in the ring, not the
+// blocks left out after them).
+TEST(RateChange, ChordsWithThousandsOfBlocksWaiting) {
+    PlannerParameters machine = test::builtin_machine();
+    machine.queue_capacity = 4096;
+    machine.max_rate = 1.5;
+    const std::vector<Block> program = helix_chords(3600);
+    const std::vector<std::pair<int, double>> rates{{300, 0.6}, {310, 1.5}, {700, 0.0}, {760, 1.0}, {765, 0.0}, {1200, 1.2}};
+    expect_within(test::run_with_rates(machine, program, rates, run_ticks(machine)), program, machine);
+}
+
+// A resume while the tool still brakes for a hold: the blocks before the hold's stop were bounded
+// by it, and the pass that lifts those bounds ran from the end of the window, found nothing changed
+// there and stopped. The tool went on braking, from 209 to 47 mm/s over 35 blocks, before it sped
+// up again (hidden where the window reached the program's end: a failed check ran the pass again).
+TEST(RateChange, AResumeWhileBrakingForAHoldSpeedsUpAgain) {
+    PlannerParameters machine = test::builtin_machine();
+    machine.queue_capacity = 4096;
+    machine.max_rate = 1.5;
+    const std::vector<Block> program = helix_chords(3600);
+    const test::RateRun r = test::run_with_rates(machine, program, {{700, 0.0}, {760, 1.0}}, run_ticks(machine));
+    expect_within(r, program, machine);
+    const double at_resume = r.samples[760].velocity.norm();
+    ASSERT_GT(at_resume, 150.0);  // braking, far from rest
+    double lowest = at_resume;
+    for (std::size_t k = 760; k < 1000; ++k) lowest = std::min(lowest, r.samples[k].velocity.norm());
+    EXPECT_GT(lowest, 0.9 * at_resume);
+}

@@ -103,6 +103,7 @@ void Lookahead::reset(const AxisVector& position) {
     goal_ = position;
     frozen_ = Frozen{};
     finished_ = false;
+    deferred_ = 0;
     waiting_since_ = -1;
     pending_dwell_ = 0.0;
 }
@@ -679,12 +680,12 @@ double Lookahead::corner_exit_cap(std::size_t i) const {
 // the next block comes).
 bool Lookahead::settled(std::size_t i) const {
     const Segment& s = seg(i);
-    return finished_ || i + 2 < count_ || s.exact_stop || (i + 1 < count_ && stops_whatever_follows(s));
+    return end_known() || i + 2 < count_ || s.exact_stop || (i + 1 < count_ && stops_whatever_follows(s));
 }
 
 bool Lookahead::exit_end(std::size_t i) const {
     const Segment& s = seg(i);
-    if (i + 1 == count_) return !finished_ && !s.exact_stop;  // an exact stop is its own, not the end's
+    if (i + 1 == count_) return !end_known() && !s.exact_stop;  // an exact stop is its own, not the end's
     if (!settled(i)) return true;                              // its junction's regime may change
     if (s.kind == Kind::stop) return false;
     const Segment& n = seg(i + 1);
@@ -759,6 +760,7 @@ double Lookahead::entry_for(std::size_t i) const {
 }
 
 void Lookahead::plan_segment(std::size_t i, double entry) {
+    ++stats_.segments_planned;
     Segment& s = seg(i);
     const double length = seg_length(i);
     const double pt = s.brake ? 0.0 : target(i);
@@ -902,16 +904,16 @@ void Lookahead::open_batch() {
 Result Lookahead::add(const Block& block, Planning when) {
     last_add_tick_ = timeline_->now();
     if (when == Planning::now) plan_added();
-    else if (!batch_.open) open_batch();
+    else if (!batch_.open && deferred_ == 0) open_batch();
     const AxisVector delta = block.target - goal_;
     const double length = delta.norm();
     if (length < min_block_length) {  // skipped; its dwell goes to the next block
         pending_dwell_ += block.dwell;
-        if (when == Planning::at_update) batch_.blocks.push_back(block);
+        if (batch_.open) batch_.blocks.push_back(block);
         return Result::skipped;
     }
-    if (count_ >= capacity_) return Result::queue_full;
-    if (when == Planning::at_update) batch_.blocks.push_back(block);
+    if (count_ + deferred_ >= capacity_) return Result::queue_full;
+    if (batch_.open) batch_.blocks.push_back(block);
     Segment s;
     s.dwell = pending_dwell_ + block.dwell;
     s.added = static_cast<double>(timeline_->now()) * parameters_.period;
@@ -919,9 +921,6 @@ Result Lookahead::add(const Block& block, Planning when) {
     s.start = goal_;
     s.end = block.target;
     s.u = delta / length;
-    s.u_box = rules_.unit_box(s.u);
-    for (int a = 0; a < limits_.axes; ++a)
-        if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
     s.length = length;
     const double cap = velocity_cap(limits_, s.u);
     s.feed = std::min(block.feed, cap);
@@ -930,22 +929,39 @@ Result Lookahead::add(const Block& block, Planning when) {
     s.tolerance = block.termination == Termination::blend ? block.tolerance : infinity;
     s.type = block.type;
     s.line = block.line;
+    arrive(s);
+    goal_ = block.target;
+    finished_ = false;
+    if (deferred_ > 0) {  // behind the blocks a change of rate left out: it rejoins after them
+        seg(count_ + deferred_) = s;
+        ++deferred_;
+        return Result::ok;
+    }
+    seg(count_) = s;
+    join(when);
+    return Result::ok;
+}
+
+void Lookahead::arrive(Segment& s) const {
+    s.u_box = rules_.unit_box(s.u);
+    s.u_jerk = 0.0;
+    for (int a = 0; a < limits_.axes; ++a)
+        if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
     s.regime = sparse_;
     s.alpha = box(s.u, sparse_);
-    s.short_block = length < s.feed_max * (s.feed_max * s.alpha + rules_.t2);
+    s.short_block = s.length < s.feed_max * (s.feed_max * s.alpha + rules_.t2);
     s.kind = Kind::stop;
     s.junction = s.regime;
     s.learned_cap = infinity;
-    seg(count_) = s;
+}
+
+void Lookahead::join(Planning when) {
     ++count_;
-    goal_ = block.target;
-    finished_ = false;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
     // (link() changed junction count_ - 3 on.) The block before is planned again whatever its
     // bounds: its exit was the end of the path's stop and is a corner now.
     if (when == Planning::now) replan(std::min(bounds_from_end(count_ >= 3 ? count_ - 3 : 0), count_ >= 2 ? count_ - 2 : 0));
-    return Result::ok;
 }
 
 std::size_t Lookahead::bounds_from_end(std::size_t settled) {

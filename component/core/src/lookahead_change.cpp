@@ -1,6 +1,6 @@
 // Changes of rate under way: feed override, hold and resume. A change plans the blocks near the
-// motion again at once and lets the rest rejoin a few a tick, as if they were arriving now, so a
-// change costs the same with 64 blocks waiting as with 4096.
+// motion again at once and lets the rest rejoin the window as the motion uses it up, each planned
+// as if it arrived then, so a change costs the same with 64 blocks waiting as with 4096.
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
@@ -12,6 +12,14 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junction this slow is its stop
+// A change of rate plans at least this many blocks at once (change_horizon).
+constexpr std::size_t change_min_blocks = 32;
+// Blocks left out by a change rejoin as the motion uses the window up, at most rejoin_most a
+// commit (each is planned as an add). Every horizon_every commits the window's length is measured
+// again: where faster blocks need more, it grows by horizon_growth blocks.
+constexpr int rejoin_most = 4;
+constexpr std::uint32_t horizon_every = 16;
+constexpr std::size_t horizon_growth = 8;
 
 }  // namespace
 
@@ -35,21 +43,91 @@ void Lookahead::set_rate(double rate) {
 void Lookahead::replan_from_front(bool resuming) {
     // The accepted plan is kept should no plan at the new rate pass the check (it goes on, and the
     // change is tried again at the next tick): the block under way may not be re-planned unchecked.
-    take_snapshot();
+    const std::size_t keep = change_horizon();
+    take_snapshot(keep);
+    defer_beyond(keep);
     if (resuming) unsplit();  // the hold's stop goes
     replan(0);
 }
 
+// ---- Blocks left out by a change ---------------------------------------------------------------
+// Planning the whole window again at each change cost 10 ms with 4096 blocks waiting (32 ms at
+// worst: firtp_worst_override), firtp_tp's default. Only the blocks the motion can reach before
+// the rest have rejoined need the new rate at once: four times the way a stop from the fastest
+// speed among them takes (v (v alpha + T2) / 2, in the block's own regime), and at least
+// change_min_blocks. The stop at the end of the blocks kept then lies beyond anything the motion
+// commits to before more blocks rejoin: a change plans the same motion as with every block in
+// (tests/core/rate_change_test.cpp), at 0.1-0.3 ms whatever the queue's depth.
+
+std::size_t Lookahead::change_horizon() const {
+    double length = 0.0, need = 0.0;
+    for (std::size_t i = 0; i < count_; ++i) {
+        if (i >= change_min_blocks && length > need) return i;
+        const Segment& s = seg(i);
+        // A dense block's speed as its bounds allow; braking for a hold, as its junctions would.
+        double v = s.feed_max;
+        if (s.dense) v = std::min(v, std::max({s.entry_max, s.exit_max, s.brake ? dense_estimate(i) : 0.0}));
+        need = std::max(need, 2.0 * v * (v * s.alpha + s.regime.t2));
+        length += seg_length(i);
+    }
+    return count_;
+}
+
+void Lookahead::defer_beyond(std::size_t keep) {
+    if (keep == 0 || keep >= count_) return;
+    change_keep_ = keep;
+    deferred_ += count_ - keep;
+    count_ = keep;
+    // The last block kept ends the known path, as it did when it came (add): a stop after it.
+    Segment& last = seg(count_ - 1);
+    last.turn = Turn{};
+    last.turn_box = -1.0;
+    last.kind = Kind::stop;
+    last.junction = last.regime;
+    last.out_ramp = Regime{-1.0};
+    last.sparse_cap = last.tight_cap = last.corner_cap = 0.0;
+    last.learned_cap = infinity;
+    if (count_ >= 2) link(count_ - 2);
+    else classify(0);
+    backward(count_ - 1);
+}
+
+void Lookahead::rejoin_some() {
+    if (deferred_ == 0) return;
+    if (++rejoin_clock_ % horizon_every == 0 || count_ == 0) {
+        const std::size_t h = change_horizon();
+        change_keep_ = h < count_ ? h : count_ + horizon_growth;
+    }
+    for (int n = 0; deferred_ > 0 && n < rejoin_most && count_ < change_keep_; ++n) {
+        // As add() made it: what its block gave, nothing a plan or a check added since.
+        Segment& s = seg(count_);
+        Segment fresh;
+        fresh.start = s.start, fresh.end = s.end, fresh.u = s.u, fresh.length = s.length;
+        fresh.feed = s.feed, fresh.feed_max = s.feed_max, fresh.tolerance = s.tolerance;
+        fresh.exact_stop = s.exact_stop, fresh.dwell = s.dwell, fresh.added = s.added;
+        fresh.type = s.type, fresh.line = s.line;
+        arrive(fresh);
+        s = fresh;
+        --deferred_;
+        ++stats_.rejoined;
+        join(Planning::now);
+    }
+}
+
 // ---- Hold --------------------------------------------------------------------------------------
 
+// Both move the segments before i, not those after: the blocks left out of the window stay
+// where they are in the ring.
 void Lookahead::insert_after(std::size_t i, const Segment& s) {
-    for (std::size_t k = count_; k > i + 1; --k) seg(k) = seg(k - 1);
+    head_ = head_ > 0 ? head_ - 1 : segments_.size() - 1;
+    for (std::size_t k = 0; k <= i; ++k) seg(k) = seg(k + 1);
     seg(i + 1) = s;
     ++count_;
 }
 
 void Lookahead::erase(std::size_t i) {
-    for (std::size_t k = i; k + 1 < count_; ++k) seg(k) = seg(k + 1);
+    for (std::size_t k = i; k > 0; --k) seg(k) = seg(k - 1);
+    head_ = ring(1);
     --count_;
 }
 
@@ -82,7 +160,7 @@ void Lookahead::place_hold_stop() {
         const double reach = a * profile_legs(rules_, in, a, a, a).x0;
         const double start = i == 0 ? frozen_.consumed : 0.0;
         // Also where the block ends in a stop: that stop may lie far beyond the earliest one.
-        if (reach < seg_length(i) * (1.0 - 1e-9) && count_ < segments_.size()) {
+        if (reach < seg_length(i) * (1.0 - 1e-9) && depth() < segments_.size()) {
             Segment rest = s;  // the rest of the block, from the stop on, with the junction after it
             const double at = start + reach;
             const AxisVector point = s.start + s.u * at;
@@ -127,9 +205,11 @@ void Lookahead::place_hold_stop() {
     }
 }
 
-void Lookahead::take_snapshot() {
-    snapshot_count_ = count_;
-    for (std::size_t i = 0; i < count_; ++i) snapshot_[i] = seg(i);
+void Lookahead::take_snapshot(std::size_t keep) {
+    snapshot_count_ = std::min(count_, keep);
+    snapshot_cut_ = count_ - snapshot_count_;
+    snapshot_head_ = head_;
+    for (std::size_t i = 0; i < snapshot_count_; ++i) snapshot_[i] = seg(i);
     snapshot_taken_ = true;
 }
 
@@ -140,7 +220,7 @@ void Lookahead::unsplit() {
         if (!s.hold_end) continue;
         s.hold_end = false;
         if (i + 1 < count_) junction_caps(i);
-        backward(count_ - 1);
+        backward(i);  // (from the end, the pass found nothing changed there and stopped before it)
     }
     for (std::size_t i = 0; i + 1 < count_; ++i) {
         Segment& s = seg(i);
@@ -158,7 +238,9 @@ void Lookahead::unsplit() {
         erase(i + 1);
         if (i + 1 < count_) link(i);
         else classify(i);
-        backward(count_ - 1);
+        // The bounds before it still brake for the hold's stop: from here down (from the end, the
+        // pass found nothing changed there and stopped; a resume kept braking for 35 blocks).
+        backward(i);
         plan_segment(i, i == 0 && frozen_.moving ? frozen_.speed : entry_for(i));  // its legs cover it whole
         return;
     }

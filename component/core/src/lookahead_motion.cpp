@@ -84,7 +84,8 @@ Lookahead::NextStep Lookahead::next_step() const {
 }
 
 bool Lookahead::final_for_start() const {
-    if (finished_ || count_ >= capacity_) return true;
+    // A window a change of rate cut (deferred_) is as long as a plan needs, as a full one is.
+    if (end_known() || deferred_ > 0 || count_ >= capacity_) return true;
     if (seg(0).exit_end_limited) return false;
     if (count_ >= 2 && seg(0).kind == Kind::dense && seg(1).entry_end_limited) return false;
     // A run of dense blocks keeps one speed a block: a slow junction further on can slow it more
@@ -120,7 +121,8 @@ void Lookahead::pop_front(bool stop) {
         if (fastest < s.feed * (1.0 - 1e-9)) ++stats_.slowed;
         if (fastest < s.feed * crawl_fraction) ++stats_.crawling;
     }
-    if ((count_ > 1 || stop) && !s.hold_split) {  // the junction after it is decided: report it
+    const bool last = count_ == 1 && deferred_ == 0;  // the program's last block, as far as it is known
+    if ((!last || stop) && !s.hold_split) {  // the junction after it is decided: report it
         CornerReport r;
         r.line = s.line;
         r.point = s.end;
@@ -128,11 +130,11 @@ void Lookahead::pop_front(bool stop) {
         r.speed_in = s.b;
         r.speed_out = count_ > 1 && s.kind != Kind::stop ? s.next_a : 0.0;
         r.epsilon = s.tolerance;
-        r.exact_stop = s.kind == Kind::stop || count_ == 1;
+        r.exact_stop = s.kind == Kind::stop || count_ == 1;  // (a window a change cut ends in a stop)
         r.predicted_error = s.exact_stop || r.exact_stop ? 0.0 : s.predicted_error;
         r.bound = r.exact_stop ? stop_bound(s) : s.bound;
         r.axis = s.bound_axis;
-        if (count_ > 1) {  // the end of the program is not a corner
+        if (!last) {  // the end of the program is not a corner
             reports_[(report_head_ + report_count_) % reports_.size()] = r;
             if (report_count_ < reports_.size()) ++report_count_;
             else report_head_ = (report_head_ + 1) % reports_.size();
@@ -251,6 +253,7 @@ void Lookahead::commit() {
         retry_ = false;
         replan_from_front(!held_);
     }
+    rejoin_some();
     for (;;) {
         if (count_ == 0) return;
         // The next step's kernel start is kept until the plan changes: most ticks end here.
@@ -586,13 +589,18 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
             // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
             // with 256 blocks waiting: tests/soak).
             const bool same_blocks = count_ == snapshot_count_;
-            for (std::size_t i = 0; i < snapshot_count_; ++i) {
-                Segment& s = seg(i);
-                if (same_blocks && s.line == snapshot_[i].line && s.end == snapshot_[i].end)
+            for (std::size_t i = 0; same_blocks && i < snapshot_count_; ++i) {
+                const Segment& s = seg(i);
+                if (s.line == snapshot_[i].line && s.end == snapshot_[i].end)
                     snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, s.learned_cap);
-                s = snapshot_[i];
             }
-            count_ = snapshot_count_;
+            // (A hold's split moved the ring's head; the blocks the change left out come back as
+            // they were, after the kept ones.)
+            head_ = snapshot_head_;
+            for (std::size_t i = 0; i < snapshot_count_; ++i) seg(i) = snapshot_[i];
+            count_ = snapshot_count_ + snapshot_cut_;
+            deferred_ -= snapshot_cut_;
+            snapshot_cut_ = 0;
             retry_ = true;
             refresh_current_leg();
             return true;

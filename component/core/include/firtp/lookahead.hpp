@@ -29,6 +29,10 @@
 // blocks arrive, only on which, but where a later check refuses what the start has already
 // committed to, or the block under way is planned again at another moment
 // (tests/core/arrival_test.cpp: seeds 1-20 alike wherever no check lowered a corner).
+//
+// A change of rate (override, hold, resume) plans again only the blocks the motion can reach
+// soon; the others leave the window and rejoin it as the motion uses it up, as arriving blocks do
+// (lookahead_change.cpp), so a change's cost does not grow with the queue.
 #pragma once
 
 #include <firtp/junction.hpp>
@@ -72,10 +76,10 @@ public:
     // A start (from rest, or after a stop) is due at the next commit: it then asks whether the
     // window settles it (final_for_start), so a caller adding blocks in batches fills it first.
     bool start_due() const;
-    bool empty() const { return count_ == 0; }           // nothing waits
+    bool empty() const { return depth() == 0; }  // nothing waits
     bool at_rest() const { return !moving(); }  // nothing under way (blocks may wait)
-    std::size_t depth() const { return count_; }
-    std::size_t free() const { return count_ < capacity_ ? capacity_ - count_ : 0; }
+    std::size_t depth() const { return count_ + deferred_; }
+    std::size_t free() const { return depth() < capacity_ ? capacity_ - depth() : 0; }
     const AxisVector& goal() const { return goal_; }
     const PlannerStats& stats() const { return stats_; }
     // The next corner report, once its junction's motion is final (false: none).
@@ -430,7 +434,19 @@ private:
     bool hold_remnants() const;  // a segment still braking for, split by or ending at a hold's stop
     void replan_from_front(bool resuming);  // after a change of rate (undoing the hold's stop)
     void unsplit();  // resume before the hold's stop began: the split block is whole again
-    void take_snapshot();
+    // The accepted plan of the first `keep` segments (all of them by default), to go back to.
+    void take_snapshot(std::size_t keep = static_cast<std::size_t>(-1));
+    // Rate changes plan the blocks within reach of the motion at once (change_horizon) and leave
+    // the rest out of the window (deferred_): they rejoin a few a tick, as blocks arriving do.
+    std::size_t change_horizon() const;
+    void defer_beyond(std::size_t keep);
+    void rejoin_some();  // at each commit
+    // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
+    void join(Planning when);
+    // A block's segment as it comes: what its own geometry gives, nothing learned, a stop after it.
+    void arrive(Segment& s) const;
+    // The stop at the window's end is the program's.
+    bool end_known() const { return finished_ && deferred_ == 0; }
     void insert_after(std::size_t i, const Segment& s);
     void erase(std::size_t i);
     // Legs of segments [first, count) (and, from segment 0, the timeline's legs before them), in
@@ -473,6 +489,9 @@ private:
     std::vector<Segment> segments_;  // ring: capacity_ + 1 (the spare for a hold's split)
     std::size_t head_ = 0;
     std::size_t count_ = 0;
+    std::size_t deferred_ = 0;  // after the window, in ring order: left out by a change of rate
+    std::size_t change_keep_ = 0;  // the window a change keeps: blocks rejoin while it holds fewer
+    std::uint32_t rejoin_clock_ = 0;
     AxisVector goal_;
     Frozen frozen_;
 
@@ -490,6 +509,8 @@ private:
     // goes on and the change is made again at the next tick, from where the motion then is.
     std::vector<Segment> snapshot_;
     std::size_t snapshot_count_ = 0;
+    std::size_t snapshot_head_ = 0;
+    std::size_t snapshot_cut_ = 0;      // blocks the change left out (defer_beyond): back in on a restore
     bool snapshot_taken_ = false;       // for the replan under way
     bool retry_ = false;                // the change failed: again at the next tick
     // Blocks added at_update since the last plan, and the window as the first of them found it.
