@@ -336,6 +336,7 @@ void Lookahead::build_legs(std::size_t first) {
         s.width = 0.0;
         for (std::size_t m = leg_begin_[i]; m < legs_.size(); ++m)
             s.width = std::max({s.width, legs_[m].rising.width(), legs_[m].falling.width()});
+        width_bound_ = std::max(width_bound_, s.width);
     }
     index_legs(legs_);
 }
@@ -374,12 +375,19 @@ std::size_t Lookahead::covered_from(std::size_t from, std::size_t first, double 
     }
     for (std::size_t j = from; j < first; ++j) settled_by_[j] = enter_[j + 1] + 0.5 * seg(j).width;
     double t = enter_[from];  // this build's
+    // Going back, t only falls: once a segment has come to rest by `until` even at the widest
+    // width any segment has, so have all before it, and the scan starts after it (walking back to
+    // the front cost 9 % of an add with 4096 blocks waiting). The same answer as from 0.
+    std::size_t k = 0;
     for (std::size_t j = from; j-- > 0;) {
+        if (t + 0.5 * width_bound_ < until) {
+            k = j + 1;
+            break;
+        }
         const Segment& s = seg(j);
         settled_by_[j] = t + 0.5 * s.width;
         t -= span(s);
     }
-    std::size_t k = 0;
     while (k < first && settled_by_[k] < until) ++k;
     return k;
 }
@@ -630,6 +638,7 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
             forward(from);
             // Not built as planned now: as wide as any kernel checked so far, for context().
             for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true, seg(i).width = std::max(seg(i).width, max_width_);
+            width_bound_ = std::max(width_bound_, max_width_);
             break;
         }
         // A limit failed next to ramps sharing a corner's jerk stage at J T2: an axis swings the

@@ -462,6 +462,7 @@ private:
     Regime sparse_;
     Timeline* timeline_;
     double max_width_ = 0.0;
+    double width_bound_ = 0.0;  // no segment's width (build_legs) has been larger: covered_from()
     double context_span_ = 0.0;  // how far before `first` the last check needed its legs (s): context()'s guess
     double jerk_norm_ = 0.0;   // |J| over the axes, for the chord margin
     bool sized_ = false;       // an axis limits jerk: starts and stops are sized (sized())
