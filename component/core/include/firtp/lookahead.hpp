@@ -437,7 +437,8 @@ private:
     // The accepted plan of the first `keep` segments (all of them by default), to go back to.
     void take_snapshot(std::size_t keep = static_cast<std::size_t>(-1));
     // Rate changes plan the blocks within reach of the motion at once (change_horizon) and leave
-    // the rest out of the window (deferred_): they rejoin a few a tick, as blocks arriving do.
+    // the rest out of the window (deferred_): they rejoin as the motion uses the window up, each
+    // planned as a block arriving then.
     std::size_t change_horizon() const;
     void defer_beyond(std::size_t keep);
     void rejoin_some();  // at each commit
@@ -492,7 +493,7 @@ private:
     std::size_t count_ = 0;
     std::size_t deferred_ = 0;  // after the window, in ring order: left out by a change of rate
     std::size_t change_keep_ = 0;  // the window a change keeps: blocks rejoin while it holds fewer
-    std::uint32_t rejoin_clock_ = 0;
+    std::uint32_t rejoin_clock_ = 0;  // commits with blocks left out: the window's reach is measured every few
     AxisVector goal_;
     Frozen frozen_;
 
