@@ -65,6 +65,14 @@ std::vector<Block> helix_chords(int blocks) {
     return program;
 }
 
+// The built-in machine with firtp_tp's window (4096 blocks) and overrides up to 150 %.
+PlannerParameters deep_queue_machine() {
+    PlannerParameters machine = test::builtin_machine();
+    machine.queue_capacity = 4096;
+    machine.max_rate = 1.5;
+    return machine;
+}
+
 void expect_within(const test::RateRun& r, const std::vector<Block>& program, const PlannerParameters& p) {
     std::vector<AxisVector> points{AxisVector::Zero()};
     for (const Block& b : program) points.push_back(b.target);
@@ -153,9 +161,7 @@ TEST(RateChange, ARetriedChangeDoesNotLowerACornerThatCannotMendIt) { check_deep
 // Now it plans the blocks the motion can reach before the rest rejoin, as the motion uses the
 // window up, each as a block arriving. Counted in segment plans, not timed.
 TEST(RateChange, AChangePlansTheBlocksWithinReachNotTheWholeQueue) {
-    PlannerParameters machine = test::builtin_machine();
-    machine.queue_capacity = 4096;
-    machine.max_rate = 1.5;
+    const PlannerParameters machine = deep_queue_machine();
     const std::vector<Block> program = helix_chords(3600);
     Planner planner(machine, AxisVector::Zero());
     for (const Block& b : program) ASSERT_EQ(planner.add(b), Result::ok);
@@ -180,9 +186,7 @@ TEST(RateChange, AChangePlansTheBlocksWithinReachNotTheWholeQueue) {
 // thousands of blocks wait (the hold's split moves the segments before it in the ring, not the
 // blocks left out after them).
 TEST(RateChange, ChordsWithThousandsOfBlocksWaiting) {
-    PlannerParameters machine = test::builtin_machine();
-    machine.queue_capacity = 4096;
-    machine.max_rate = 1.5;
+    const PlannerParameters machine = deep_queue_machine();
     const std::vector<Block> program = helix_chords(3600);
     const std::vector<std::pair<int, double>> rates{{300, 0.6}, {310, 1.5}, {700, 0.0}, {760, 1.0}, {765, 0.0}, {1200, 1.2}};
     expect_within(test::run_with_rates(machine, program, rates, run_ticks(machine)), program, machine);
@@ -193,9 +197,7 @@ TEST(RateChange, ChordsWithThousandsOfBlocksWaiting) {
 // there and stopped. The tool went on braking, from 209 to 47 mm/s over 35 blocks, before it sped
 // up again (hidden where the window reached the program's end: a failed check ran the pass again).
 TEST(RateChange, AResumeWhileBrakingForAHoldSpeedsUpAgain) {
-    PlannerParameters machine = test::builtin_machine();
-    machine.queue_capacity = 4096;
-    machine.max_rate = 1.5;
+    const PlannerParameters machine = deep_queue_machine();
     const std::vector<Block> program = helix_chords(3600);
     const test::RateRun r = test::run_with_rates(machine, program, {{700, 0.0}, {760, 1.0}}, run_ticks(machine));
     expect_within(r, program, machine);
