@@ -3,6 +3,7 @@
 // limits, also in finite differences, every corner within its tolerance once, the end exact.
 // What such a change costs is firtp_worst_override's (tests/bench). Seeded; FIRTP_RANDOM_SEED
 // shifts the seeds and FIRTP_RANDOM_SCALE soaks.
+#include "support/chords.hpp"
 #include "support/limits.hpp"
 #include "support/random_machine.hpp"
 #include "support/rate_run.hpp"
@@ -20,11 +21,12 @@
 #include <vector>
 
 using namespace firtp;
+using test::run_ticks;
+using test::deep_queue_machine;
+using test::expect_within;
+using test::helix_chords;
 
 namespace {
-
-// A run that has not ended after 400 s of motion fails (without a defect these end far sooner).
-std::int64_t run_ticks(const PlannerParameters& p) { return static_cast<std::int64_t>(400.0 / p.period); }
 
 // A zig-zag of 3 mm blocks turning 20 degrees either way, F 150 mm/s, G64 P0.05; every 40th an
 // exact stop.
@@ -43,48 +45,6 @@ std::vector<Block> zig_zag_program(int blocks) {
         program.push_back(b);
     }
     return program;
-}
-
-// examples/polygon360.ngc's circle of R20 in 0.35 mm chords, F 300 mm/s, G64 P0.5, rising 0.05
-// mm a turn so the measurement never meets the path again: a dense path, whose stop spans the most
-// blocks.
-std::vector<Block> helix_chords(int blocks) {
-    std::vector<Block> program;
-    for (int i = 1; i <= blocks; ++i) {
-        const double angle = 2.0 * M_PI * i / 360.0;
-        Block b;
-        b.target = AxisVector::Zero();
-        b.target[0] = 20.0 * std::cos(angle) - 20.0;
-        b.target[1] = 20.0 * std::sin(angle);
-        b.target[2] = 0.05 * i / 360.0;
-        b.feed = 300.0;
-        b.tolerance = 0.5;
-        b.line = i;
-        program.push_back(b);
-    }
-    return program;
-}
-
-// The built-in machine with firtp_tp's window (4096 blocks) and overrides up to 150 %.
-PlannerParameters deep_queue_machine() {
-    PlannerParameters machine = test::builtin_machine();
-    machine.queue_capacity = 4096;
-    machine.max_rate = 1.5;
-    return machine;
-}
-
-void expect_within(const test::RateRun& r, const std::vector<Block>& program, const PlannerParameters& p) {
-    std::vector<AxisVector> points{AxisVector::Zero()};
-    for (const Block& b : program) points.push_back(b.target);
-    const Measured m = measure(r.samples, points, p.period);
-    ASSERT_TRUE(r.ended);  // (within 400 s)
-    ASSERT_TRUE(m.finite);
-    ASSERT_EQ(test::beyond_limits(r.samples, m, p), "");
-    ASSERT_EQ(m.corner_errors.size(), program.size() - 1);  // each corner passed once
-    for (std::size_t i = 0; i < m.corner_errors.size(); ++i)
-        EXPECT_LE(m.corner_errors[i], program[i].tolerance * (1 + 1e-6)) << "corner after line " << program[i].line;
-    EXPECT_EQ(m.end_position, program.back().target);
-    EXPECT_EQ(r.samples.back().velocity, AxisVector::Zero());
 }
 
 // Random machines (support/random_machine.hpp) with 256 blocks waiting: meanders of 150-400

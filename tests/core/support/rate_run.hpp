@@ -20,6 +20,7 @@ struct RateRun {
     double longest_stop = 0.0;  // s, from a hold or an abort to rest
     bool aborted = false;
     bool ended = false;  // at rest with everything run (or flushed after the abort) within the ticks given
+    PlannerStats stats;  // the planner's, at the end
 };
 
 // Events (tick, rate): 0 holds, a rate again resumes, < 0 aborts. At most `max_ticks` periods.
@@ -60,6 +61,7 @@ inline RateRun run_with_rates(const PlannerParameters& p, const std::vector<Bloc
             break;
         }
     }
+    r.stats = planner.stats();
     return r;
 }
 
