@@ -932,7 +932,7 @@ Result Lookahead::add(const Block& block, Planning when) {
     arrive(s);
     goal_ = block.target;
     finished_ = false;
-    if (deferred_ > 0) {  // behind the blocks a change of rate left out: it rejoins after them
+    if (deferred_ > 0 || (when == Planning::now && waits_beyond())) {  // beyond the window's reach: it waits
         seg(count_ + deferred_) = s;
         ++deferred_;
         return Result::ok;

@@ -1,6 +1,6 @@
 // Changes of rate under way: feed override, hold and resume. A change plans the blocks near the
-// motion again at once and lets the rest rejoin the window as the motion uses it up, each planned
-// as if it arrived then, so a change costs the same with 64 blocks waiting as with 4096.
+// motion again at once and lets the rest wait beyond the window (lookahead_reach.cpp), so a change
+// costs the same with 64 blocks waiting as with 4096.
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
@@ -12,14 +12,6 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junction this slow is its stop
-// A change of rate plans at least this many blocks at once (change_horizon).
-constexpr std::size_t change_min_blocks = 32;
-// Blocks left out by a change rejoin as the motion uses the window up, at most rejoin_most a
-// commit (each is planned as an add). Every horizon_every commits the window's length is measured
-// again: where faster blocks need more, it grows by horizon_growth blocks.
-constexpr int rejoin_most = 4;
-constexpr std::uint32_t horizon_every = 16;
-constexpr std::size_t horizon_growth = 8;
 
 }  // namespace
 
@@ -43,75 +35,11 @@ void Lookahead::set_rate(double rate) {
 void Lookahead::replan_from_front(bool resuming) {
     // The accepted plan is kept should no plan at the new rate pass the check (it goes on, and the
     // change is tried again at the next tick): the block under way may not be re-planned unchecked.
-    const std::size_t keep = change_horizon();
+    const std::size_t keep = horizon();
     take_snapshot(keep);
     defer_beyond(keep);
     if (resuming) unsplit();  // the hold's stop goes
     replan(0);
-}
-
-// ---- Blocks left out by a change ---------------------------------------------------------------
-// Planning the whole window again at each change cost 10 ms with 4096 blocks waiting (32 ms at
-// worst: firtp_worst_override), firtp_tp's default. Only the blocks the motion can reach before
-// the rest have rejoined need the new rate at once: four times the way a stop from the fastest
-// speed among them takes (v (v alpha + T2) / 2, in the block's own regime), and at least
-// change_min_blocks. The stop at the end of the blocks kept then lies beyond anything the motion
-// commits to before more blocks rejoin: a change plans the same motion as with every block in
-// (tests/core/rate_change_test.cpp), at 0.1-0.3 ms whatever the queue's depth.
-
-std::size_t Lookahead::change_horizon() const {
-    double length = 0.0, need = 0.0;
-    for (std::size_t i = 0; i < count_; ++i) {
-        if (i >= change_min_blocks && length > need) return i;
-        const Segment& s = seg(i);
-        // A dense block's speed as its bounds allow; braking for a hold, as its junctions would.
-        double v = s.feed_max;
-        if (s.dense) v = std::min(v, std::max({s.entry_max, s.exit_max, s.brake ? dense_estimate(i) : 0.0}));
-        need = std::max(need, 2.0 * v * (v * s.alpha + s.regime.t2));
-        length += seg_length(i);
-    }
-    return count_;
-}
-
-void Lookahead::defer_beyond(std::size_t keep) {
-    if (keep == 0 || keep >= count_) return;
-    change_keep_ = keep;
-    deferred_ += count_ - keep;
-    count_ = keep;
-    // The last block kept ends the known path, as it did when it came (add): a stop after it.
-    Segment& last = seg(count_ - 1);
-    last.turn = Turn{};
-    last.turn_box = -1.0;
-    last.kind = Kind::stop;
-    last.junction = last.regime;
-    last.out_ramp = Regime{-1.0};
-    last.sparse_cap = last.tight_cap = last.corner_cap = 0.0;
-    last.learned_cap = infinity;
-    if (count_ >= 2) link(count_ - 2);
-    else classify(0);
-    backward(count_ - 1);
-}
-
-void Lookahead::rejoin_some() {
-    if (deferred_ == 0) return;
-    if (++rejoin_clock_ % horizon_every == 0 || count_ == 0) {
-        const std::size_t h = change_horizon();
-        change_keep_ = h < count_ ? h : count_ + horizon_growth;
-    }
-    for (int n = 0; deferred_ > 0 && n < rejoin_most && count_ < change_keep_; ++n) {
-        // As add() made it: what its block gave, nothing a plan or a check added since.
-        Segment& s = seg(count_);
-        Segment fresh;
-        fresh.start = s.start, fresh.end = s.end, fresh.u = s.u, fresh.length = s.length;
-        fresh.feed = s.feed, fresh.feed_max = s.feed_max, fresh.tolerance = s.tolerance;
-        fresh.exact_stop = s.exact_stop, fresh.dwell = s.dwell, fresh.added = s.added;
-        fresh.type = s.type, fresh.line = s.line;
-        arrive(fresh);
-        s = fresh;
-        --deferred_;
-        ++stats_.rejoined;
-        join(Planning::now);
-    }
 }
 
 // ---- Hold --------------------------------------------------------------------------------------

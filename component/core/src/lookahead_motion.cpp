@@ -84,7 +84,8 @@ Lookahead::NextStep Lookahead::next_step() const {
 }
 
 bool Lookahead::final_for_start() const {
-    // A window a change of rate cut (deferred_) is as long as a plan needs, as a full one is.
+    // A window with blocks waiting beyond its reach (deferred_) is as long as a plan needs, as a
+    // full one is.
     if (finished_ || deferred_ > 0 || count_ >= capacity_) return true;
     if (seg(0).exit_end_limited) return false;
     if (count_ >= 2 && seg(0).kind == Kind::dense && seg(1).entry_end_limited) return false;

@@ -136,6 +136,56 @@ inline RandomCase random_case(std::mt19937_64& rng) {
     }
 }
 
+// A long program on one random machine: pieces drawn as random_blocks draws a program, each set
+// to the right (+X) of those before and left along X out of its own box, so the path never comes
+// back near itself. Two segments that are not neighbours stay 3 tolerances (the larger of the
+// corners at their ends) and a servo step apart. A piece that does not is drawn again; a machine
+// on which 300 pieces in a row do not, too.
+inline RandomCase long_random_case(std::mt19937_64& rng, std::size_t blocks) {
+    for (;;) {
+        RandomCase c;
+        c.parameters = random_machine(rng);
+        std::vector<AxisVector> points{AxisVector::Zero()};
+        std::vector<double> tolerance{0.0};  // of the corner at each point
+        double right = 0.0, fastest = 0.0;
+        for (int misses = 0; c.blocks.size() < blocks && misses < 300;) {
+            std::vector<Block> piece = random_blocks(rng, c.parameters);
+            double low = 0.0, high = 0.0, fast = fastest;
+            for (const Block& b : piece)
+                low = std::min(low, b.target[0]), high = std::max(high, b.target[0]), fast = std::max(fast, b.feed * c.parameters.max_rate);
+            Block out = piece.back();
+            out.target[0] = high + 2.0;
+            out.termination = Termination::blend;
+            piece.push_back(out);
+            AxisVector shift = AxisVector::Zero();
+            shift[0] = right + 5.0 - low;
+            std::vector<AxisVector> p = points;
+            std::vector<double> t = tolerance;
+            for (Block& b : piece) {
+                b.target += shift;
+                b.line = static_cast<std::int64_t>(c.blocks.size()) + (&b - piece.data()) + 1;
+                if ((b.target - p.back()).norm() >= min_block_length) p.push_back(b.target), t.push_back(b.tolerance);
+                else t.back() = std::max(t.back(), b.tolerance);
+            }
+            auto gap = [&](std::size_t i, std::size_t k) {
+                return 3.0 * std::max({t[i], t[i + 1], t[k], t[k + 1]}) + fast * c.parameters.period;
+            };
+            bool apart = true;
+            for (std::size_t i = points.size() - 1; apart && i + 1 < p.size(); ++i)
+                for (std::size_t k = 0; apart && k + 1 < i; ++k) apart = segment_distance(p[i], p[i + 1], p[k], p[k + 1]) >= gap(i, k);
+            if (!apart) {
+                ++misses;
+                continue;
+            }
+            misses = 0;
+            points = std::move(p), tolerance = std::move(t), fastest = fast;
+            c.blocks.insert(c.blocks.end(), piece.begin(), piece.end());
+            right = shift[0] + high + 2.0;
+        }
+        if (c.blocks.size() >= blocks) return c;
+    }
+}
+
 // One program of firtp_cliffs (tests/bench/cliffs.cpp) as it draws it: the case, then the axis
 // whose velocity, acceleration and jerk limit it raises. Tests that hold one of its programs
 // (start_ramp_test.cpp) draw them the same way.

@@ -30,9 +30,10 @@
 // committed to, or the block under way is planned again at another moment
 // (tests/core/arrival_test.cpp: seeds 1-20 alike wherever no check lowered a corner).
 //
-// A change of rate (override, hold, resume) plans again only the blocks the motion can reach
-// soon; the others leave the window and rejoin it as the motion uses it up, as arriving blocks do
-// (lookahead_change.cpp), so a change's cost does not grow with the queue.
+// Only the blocks the motion can reach soon are planned: a change of rate (override, hold, resume)
+// plans those again, and the others, with blocks added to a window that already reaches that far,
+// wait beyond it and join it in batches as the motion uses it up (lookahead_reach.cpp). Neither a
+// change's cost nor an add's grows with the queue or with the stop at the end of the path.
 #pragma once
 
 #include <firtp/junction.hpp>
@@ -436,12 +437,13 @@ private:
     void unsplit();  // resume before the hold's stop began: the split block is whole again
     // The accepted plan of the first `keep` segments (all of them by default), to go back to.
     void take_snapshot(std::size_t keep = static_cast<std::size_t>(-1));
-    // Rate changes plan the blocks within reach of the motion at once (change_horizon) and leave
-    // the rest out of the window (deferred_): they rejoin as the motion uses the window up, each
-    // planned as a block arriving then.
-    std::size_t change_horizon() const;
-    void defer_beyond(std::size_t keep);
-    void rejoin_some();  // at each commit
+    // The window's reach (lookahead_reach.cpp): blocks beyond it wait (deferred_) and join it in
+    // batches as the motion uses it up.
+    std::size_t horizon() const;  // the blocks from the front the motion can reach soon
+    bool waits_beyond();          // add(): the window reaches far enough, the new block waits
+    void defer_beyond(std::size_t keep);  // a change of rate: the blocks after `keep` wait
+    void take_waiting();          // the first waiting block, as it came, at ring slot count_
+    void rejoin_some();           // at each commit
     // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
     void join(Planning when);
     // A block's segment as it comes: what its own geometry gives, nothing learned, a stop after it.
@@ -491,9 +493,15 @@ private:
     std::vector<Segment> segments_;  // ring: capacity_ + 1 (the spare for a hold's split)
     std::size_t head_ = 0;
     std::size_t count_ = 0;
-    std::size_t deferred_ = 0;  // after the window, in ring order: left out by a change of rate
-    std::size_t change_keep_ = 0;  // the window a change keeps: blocks rejoin while it holds fewer
-    std::uint32_t rejoin_clock_ = 0;  // commits with blocks left out: the window's reach is measured every few
+    std::size_t deferred_ = 0;  // after the window, in ring order: blocks beyond its reach
+    std::size_t keep_ = 0;      // the window's reach: waiting blocks join while it holds fewer
+    std::uint32_t rejoin_clock_ = 0;  // commits with blocks waiting: the reach is measured every few
+    std::uint32_t add_clock_ = 0;     // adds without: likewise
+    struct {  // what a batch of waiting blocks found, for its undo (with snapshot_)
+        std::size_t ramp_change = 0;
+        double max_width = 0.0, context_span = 0.0;
+        std::uint64_t unfit = 0;
+    } undo_;
     AxisVector goal_;
     Frozen frozen_;
 
@@ -513,6 +521,7 @@ private:
     std::size_t snapshot_count_ = 0;
     std::size_t snapshot_head_ = 0;
     std::size_t snapshot_cut_ = 0;      // blocks the change left out (defer_beyond): back in on a restore
+    // (snapshot_ also keeps the window a batch of waiting blocks found: rejoin_some.)
     bool snapshot_taken_ = false;       // for the replan under way
     bool retry_ = false;                // the change failed: again at the next tick
     // Blocks added at_update since the last plan, and the window as the first of them found it.

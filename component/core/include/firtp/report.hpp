@@ -45,9 +45,9 @@ struct PlannerStats {
     std::uint64_t checks = 0;         // plans the exact check measured
     std::uint64_t legs_checked = 0;   // the legs those checks summed: their context and the changed tail
     std::uint64_t unfit = 0;          // segment plans whose legs did not cover the block (a defect)
-    std::uint64_t batches_undone = 0; // blocks added at_update whose plan failed: added again one by one
+    std::uint64_t batches_undone = 0; // batches (added at_update, or waiting blocks joining) whose plan failed: one by one
     std::uint64_t segments_planned = 0;  // forward plans of a segment (the passes' work)
-    std::uint64_t rejoined = 0;       // blocks a change of rate left out of the window that rejoined it
+    std::uint64_t rejoined = 0;       // blocks that waited beyond the window's reach and joined it
 };
 
 }  // namespace firtp
