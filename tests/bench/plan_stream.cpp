@@ -21,7 +21,8 @@
 // batches planned at the next tick; each add's time is then only its queueing, and blocks/s
 // counts the planning.
 // Reports blocks/s (wall clock over the whole loop, sampling included), each planner.add timed on
-// this thread's CPU clock and on the wall clock (mean, p50, p99, max), cycle time against the time
+// this thread's CPU clock and on the wall clock (mean, p50, p99, max), each period's adds and update
+// together (blocks that waited beyond the window's reach join at an update), cycle time against the time
 // at the programmed feeds sum(L / F) (the paper's fixed chain: the closed form sum(Tv) + sum(Td - Tk)
 // + Td, as firtp plan), the largest path speed, axis velocity,
 // acceleration and jerk at the samples, and peak RSS (VmHWM, bench_stats.hpp) after the first tenth of
@@ -218,6 +219,9 @@ int main(int argc, char** argv) try {
     Planner planner(parameters, start);
 
     Histogram add_cpu(50, 5'000'000), add_wall(50, 5'000'000);  // 50 ns buckets up to 5 ms: 800 KB each
+    // A servo period's planning: its adds and its update (where blocks that waited beyond the
+    // window's reach join it).
+    Histogram period_cpu(50, 5'000'000);
     const int axes = parameters.limits.axes;
     double max_speed = 0.0, max_v = 0.0, max_a = 0.0, max_j = 0.0;
     double tv_sum = 0.0, gaps = 0.0;
@@ -236,6 +240,7 @@ int main(int argc, char** argv) try {
     const AxisState& state = output.state;
     for (Result motion = Result::working; motion == Result::working || pending;) {
         const bool room = !batch || refill_due(planner);
+        std::int64_t period_ns = 0;
         for (long added = 0; room && pending && planner.free() > 0 && (per_period == 0 || added < per_period); ++added) {
             const std::int64_t c0 = thread_cpu_ns();
             const std::int64_t w0 = wall_ns();
@@ -249,6 +254,7 @@ int main(int argc, char** argv) try {
             }
             add_cpu.add(c1 - c0);
             add_wall.add(w1 - w0);
+            period_ns += c1 - c0;
             slowest.emplace_back(c1 - c0, pending->line);  // the N slowest on the CPU clock
             std::push_heap(slowest.begin(), slowest.end(), std::greater<>());
             if (slowest.size() > slowest_count) {
@@ -264,7 +270,9 @@ int main(int argc, char** argv) try {
             pending = source->next();
         }
         input.end_of_program = !pending;
+        const std::int64_t u0 = thread_cpu_ns();
         motion = planner.update(input, output);
+        period_cpu.add(period_ns + thread_cpu_ns() - u0);
         for (CornerReport corner; planner.take_report(corner);) {
             ++corners;
             gaps += td - corner.Tk;
@@ -290,13 +298,13 @@ int main(int argc, char** argv) try {
 
     if (json) {
         std::printf("{\"source\":\"%s\",\"blocks\":%lld,\"corners\":%lld,\"ticks\":%lld,\"wall_s\":%.3f,\"cpu_s\":%.3f,"
-                    "\"blocks_per_s\":%.0f,\"blocks_per_cpu_s\":%.0f,\"add_cpu_ns\":%s,\"add_wall_ns\":%s,"
+                    "\"blocks_per_s\":%.0f,\"blocks_per_cpu_s\":%.0f,\"add_cpu_ns\":%s,\"add_wall_ns\":%s,\"period_cpu_ns\":%s,"
                     "\"cycle_time_s\":%.6f,\"closed_form_cycle_time_s\":%.6f,"
                     "\"max_speed\":%.3f,\"max_axis_velocity\":%.3f,\"max_axis_acceleration\":%.3f,\"max_axis_jerk\":%.3f,"
                     "\"peak_rss_kib_after_first_tenth\":%ld,\"peak_rss_kib\":%ld,\"samples_mib_if_kept\":%.1f,"
                     "\"end_exact\":%s,\"flat\":%s}\n",
                     what.c_str(), planned, corners, ticks, wall_s, cpu_s, static_cast<double>(planned) / wall_s,
-                    static_cast<double>(planned) / cpu_s, add_cpu.json().c_str(), add_wall.json().c_str(), cycle_time,
+                    static_cast<double>(planned) / cpu_s, add_cpu.json().c_str(), add_wall.json().c_str(), period_cpu.json().c_str(), cycle_time,
                     closed_form, max_speed, max_v, max_a, max_j, warm_peak_kib, end_peak_kib,
                     samples_mib, exact ? "true" : "false", flat ? "true" : "false");
     } else {
@@ -310,6 +318,9 @@ int main(int argc, char** argv) try {
         std::printf("  planner.add, wall clock:       mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us (maxima include preemption)\n",
                     add_wall.mean() * 1e-3, static_cast<double>(add_wall.quantile(0.5)) * 1e-3,
                     static_cast<double>(add_wall.quantile(0.99)) * 1e-3, static_cast<double>(add_wall.max()) * 1e-3);
+        std::printf("  a period (its adds and update), thread CPU clock: mean %.1f us, p50 %.1f, p99 %.1f, max %.1f us\n",
+                    period_cpu.mean() * 1e-3, static_cast<double>(period_cpu.quantile(0.5)) * 1e-3,
+                    static_cast<double>(period_cpu.quantile(0.99)) * 1e-3, static_cast<double>(period_cpu.max()) * 1e-3);
         std::sort(slowest.begin(), slowest.end(), std::greater<>());
         for (const auto& [ns, line] : slowest) std::printf("  slow add: line %lld, %.1f us CPU\n", static_cast<long long>(line), static_cast<double>(ns) * 1e-3);
         std::printf("  cycle time %.4f s (%s %.4f s)\n", cycle_time, parameters.fixed_chain ? "closed form" : "at the feeds",

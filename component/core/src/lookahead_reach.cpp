@@ -24,9 +24,11 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr std::size_t min_window = 32;
-// Waiting blocks join rejoin_batch at a time, while the window holds fewer than it must keep.
-// Every horizon_every commits (or adds) its reach is measured again; where faster blocks need
-// more, it grows by horizon_growth blocks.
+// Waiting blocks join while the window holds fewer than it must keep, as many at a time as the
+// last join re-planned blocks before them (its bounds changed that far back), up to rejoin_batch:
+// a batch then costs about two joins of one, and a block on a dense path a fraction of one. Every
+// horizon_every commits (or adds) the reach is measured again; where faster blocks need more, it
+// grows by horizon_growth blocks.
 constexpr std::size_t rejoin_batch = 16;
 constexpr std::uint32_t horizon_every = 16;
 constexpr std::size_t horizon_growth = 8;
@@ -102,7 +104,7 @@ void Lookahead::rejoin_some() {
     // (Held, or a change to try again: one at a time, as the hold's stop and the change's snapshot
     // expect.)
     const bool batch = !held_ && !retry_ && before <= batch_window_most;
-    const std::size_t n = std::min(deferred_, batch ? rejoin_batch : std::size_t{1});
+    const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_, std::size_t{1}, rejoin_batch) : std::size_t{1});
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
         undo_ = {ramp_change_, max_width_, context_span_, stats_.unfit};
@@ -115,7 +117,9 @@ void Lookahead::rejoin_some() {
     }
     // One plan for them all (as plan_batch): the bounds from the new end, the plan from the junction
     // they joined on.
-    if (replan(std::min(bounds_from_end(before >= 2 ? before - 2 : 0), before > 0 ? before - 1 : 0), n > 1)) return;
+    const std::size_t changed = bounds_from_end(before >= 2 ? before - 2 : 0);
+    tail_ = before > changed ? before - changed : 1;
+    if (replan(std::min(changed, before > 0 ? before - 1 : 0), n > 1)) return;
     // No plan short of the last resort, which is one block's: the window as they found it, and the
     // first of them alone.
     for (std::size_t i = 0; i < before; ++i) seg(i) = snapshot_[i];

@@ -497,6 +497,7 @@ private:
     std::size_t keep_ = 0;      // the window's reach: waiting blocks join while it holds fewer
     std::uint32_t rejoin_clock_ = 0;  // commits with blocks waiting: the reach is measured every few
     std::uint32_t add_clock_ = 0;     // adds without: likewise
+    std::size_t tail_ = 1;  // blocks before the last to join whose bounds that join changed (+ 1)
     struct {  // what a batch of waiting blocks found, for its undo (with snapshot_)
         std::size_t ramp_change = 0;
         double max_width = 0.0, context_span = 0.0;
