@@ -208,6 +208,45 @@ TEST_P(PlannerRealTime, AddAndUpdateNeitherAllocateNorLock) {
 }
 INSTANTIATE_TEST_SUITE_P(Machines, PlannerRealTime, ::testing::Values(true, false), machine_name);
 
+// A dense path fed a block a period, as firtp_tp feeds it, into a deep window: blocks added beyond
+// the window's reach wait and join it in batches at an update (lookahead_reach.cpp), whose undo
+// copies the window into storage made at construction. Overrides and holds among them.
+TEST(PlannerRealTime, BlocksJoiningInBatchesNeitherAllocateNorLock) {
+    PlannerParameters p = test::operation_settings(true).planner;
+    p.queue_capacity = 1024;
+    Planner planner(p, AxisVector::Zero());
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Totals totals;
+    PlannerInput input;
+    PlannerOutput output;
+    Block b;
+    b.feed = 300.0;
+    b.tolerance = 0.5;
+    int added = 0;
+    for (int k = 0; k < 200'000; ++k) {
+        rt_probe::arm();
+        if (added < 60'000 && planner.free() > 0) {  // a helix of R20 in 0.35 mm chords
+            ++added;
+            const double angle = 2.0 * std::numbers::pi * added / 360.0;
+            b.target[0] = 20.0 * std::cos(angle) - 20.0;
+            b.target[1] = 20.0 * std::sin(angle);
+            b.target[2] = 0.05 * added / 360.0;
+            b.line = added;
+            ASSERT_EQ(planner.add(b), Result::ok);
+        }
+        input.end_of_program = added == 60'000;
+        const double u = unit(rng);
+        if (u < 0.0005) input.hold = u < 0.0001, input.rate = 0.3 + 1.2 * unit(rng);
+        planner.update(input, output);
+        totals.add(rt_probe::disarm());
+    }
+    expect_clean(totals, "Planner::add and Planner::update, blocks joining in batches");
+    std::printf("  %d chords added, %llu joined after waiting beyond the window\n", added,
+                static_cast<unsigned long long>(planner.stats().rejoined));
+    EXPECT_GT(planner.stats().rejoined, 10'000u);
+}
+
 // firtp_tp's servo-thread calls: a move added per period when there is room (lines and arcs),
 // run_cycle every period, pause/resume, override and aborts; the rebuild for the axis limits
 // happens before counting starts (it allocates by design, from the module's arena).
