@@ -1,7 +1,7 @@
 // The window's reach. Only the blocks the motion can reach soon need a plan now: four times the way
 // a stop from the fastest of them takes (v (v alpha + T2) / 2, in each block's own regime), and
 // at least min_window blocks. The others wait in the ring after the window (deferred_) and join it
-// as the motion uses it up, rejoin_batch at a time under one plan.
+// as the motion uses it up, in batches under one plan.
 //
 // - A change of rate plans the blocks within reach again and leaves the rest waiting: planning the
 //   whole window cost 10 ms with 4096 blocks queued (32 ms at worst: firtp_worst_override).
