@@ -87,8 +87,7 @@ void BM_PlanBlock(benchmark::State& state) {
     std::size_t next = 0;
     AxisState out;
     double worst = 0.0;
-    using Clock = std::chrono::steady_clock;
-    auto ns = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::nano>(b - a).count(); };
+    auto now = [] { return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
     for (auto _ : state) {
         if (next == blocks.size()) {
             planner.finish();
@@ -96,20 +95,12 @@ void BM_PlanBlock(benchmark::State& state) {
             planner.reset(AxisVector::Zero());
             next = 0;
         }
-        double spent = 0.0;
-        while (planner.depth() >= 64 || planner.free() == 0) {
-            const std::uint64_t planned = planner.stats().segments_planned;
-            const auto begin = Clock::now();
-            planner.tick(out);
-            const auto end = Clock::now();
-            if (planner.stats().segments_planned != planned) spent += ns(begin, end), worst = std::max(worst, ns(begin, end));
-        }
-        const auto begin = Clock::now();
+        const firtp::bench::PlanningTicks ticks = firtp::bench::tick_until_room(planner, out, now);
+        const double begin = now();
         benchmark::DoNotOptimize(planner.add(blocks[next++]));
-        const auto end = Clock::now();
-        spent += ns(begin, end);
-        worst = std::max(worst, ns(begin, end));
-        state.SetIterationTime(spent * 1e-9);
+        const double add = now() - begin;
+        worst = std::max({worst, ticks.slowest_ns, add});
+        state.SetIterationTime((ticks.total_ns + add) * 1e-9);
     }
     state.counters["worst_ns"] = worst;
 }

@@ -1,12 +1,14 @@
 // The random corners of firtp_bench (BM_PlanBlock, BM_Tick), firtp_worst_add and
 // firtp_plan_stream --generate corners: each block 2-40 mm from the last in a random direction of
-// the first `axes` axes, at 100-300 mm/s (or 250 throughout), 0.05 mm tolerance. And the machines
-// firtp_bench plans them on.
+// the first `axes` axes, at 100-300 mm/s (or 250 throughout), 0.05 mm tolerance. The machines
+// firtp_bench plans them on, and the ticks between two blocks of the stream.
 #pragma once
 
 #include <firtp/parameters.hpp>
+#include <firtp/planner.hpp>
 #include <firtp/types.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 
@@ -52,5 +54,26 @@ private:
     AxisVector at_ = AxisVector::Zero();
     std::int64_t line_ = 0;
 };
+
+// Ticks until the stream of 64 blocks of look-ahead has room for the next. Blocks that waited
+// beyond the window's reach join it at a tick; the ticks that planned (segment plans counted)
+// are timed by `now` (ns): their sum and the slowest. Ticks that plan nothing are BM_Tick's.
+struct PlanningTicks {
+    double total_ns = 0.0, slowest_ns = 0.0;
+};
+template <class Now>
+PlanningTicks tick_until_room(Planner& planner, AxisState& out, Now now) {
+    PlanningTicks t;
+    while (planner.depth() >= 64 || planner.free() == 0) {
+        const std::uint64_t planned = planner.stats().segments_planned;
+        const double begin = static_cast<double>(now());
+        planner.tick(out);
+        const double end = static_cast<double>(now());
+        if (planner.stats().segments_planned == planned) continue;
+        t.total_ns += end - begin;
+        t.slowest_ns = std::max(t.slowest_ns, end - begin);
+    }
+    return t;
+}
 
 }  // namespace firtp::bench

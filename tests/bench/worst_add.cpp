@@ -74,16 +74,8 @@ int main(int argc, char** argv) {
         bench::RandomCorners corners(3, varying, seed);
         AxisState out;
         for (std::size_t k = 0; k < n; ++k) {
-            double spent = 0.0, slowest = 0.0;
-            while (planner.depth() >= 64 || planner.free() == 0) {
-                const std::uint64_t planned = planner.stats().segments_planned;
-                const std::int64_t c0 = bench::thread_cpu_ns();
-                planner.tick(out);
-                const std::int64_t c1 = bench::thread_cpu_ns();
-                if (planner.stats().segments_planned == planned) continue;
-                spent += static_cast<double>(c1 - c0) * 1e-3;
-                slowest = std::max(slowest, static_cast<double>(c1 - c0) * 1e-3);
-            }
+            const bench::PlanningTicks ticks = bench::tick_until_room(planner, out, bench::thread_cpu_ns);
+            double spent = ticks.total_ns * 1e-3, slowest = ticks.slowest_ns * 1e-3;
             const Block block = corners.next();
             const std::int64_t c0 = bench::thread_cpu_ns();
             const Result result = planner.add(block);

@@ -897,8 +897,7 @@ void Lookahead::open_batch() {
     b.blocks.clear();
     for (std::size_t i = 0; i < count_; ++i) b.window[i] = seg(i);
     b.head = head_, b.count = count_, b.goal = goal_;
-    b.pending_dwell = pending_dwell_, b.max_width = max_width_, b.context_span = context_span_;
-    b.ramp_change = ramp_change_, b.unfit = stats_.unfit, b.finished = finished_;
+    b.pending_dwell = pending_dwell_, b.plan = plan_scalars(), b.finished = finished_;
 }
 
 Result Lookahead::add(const Block& block, Planning when) {
@@ -956,12 +955,28 @@ void Lookahead::arrive(Segment& s) const {
 }
 
 void Lookahead::join(Planning when) {
+    link_newest();
+    if (when == Planning::now) plan_joined(count_ - 1);
+}
+
+void Lookahead::link_newest() {
     ++count_;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
-    // (link() changed junction count_ - 3 on.) The block before is planned again whatever its
+}
+
+bool Lookahead::plan_joined(std::size_t before, bool undoable, std::size_t* changed) {
+    // (link() changed junction before - 2 on.) The block before them is planned again whatever its
     // bounds: its exit was the end of the path's stop and is a corner now.
-    if (when == Planning::now) replan(std::min(bounds_from_end(count_ >= 3 ? count_ - 3 : 0), count_ >= 2 ? count_ - 2 : 0));
+    const std::size_t lowest = bounds_from_end(before >= 2 ? before - 2 : 0);
+    if (changed != nullptr) *changed = lowest;
+    return replan(std::min(lowest, before > 0 ? before - 1 : 0), undoable);
+}
+
+void Lookahead::restore(const PlanScalars& p) {
+    ramp_change_ = p.ramp_change, max_width_ = p.max_width, context_span_ = p.context_span;
+    stats_.unfit = p.unfit;
+    next_known_ = false;
 }
 
 std::size_t Lookahead::bounds_from_end(std::size_t settled) {

@@ -233,16 +233,13 @@ void Lookahead::plan_batch() {
     Batch& b = batch_;
     b.open = false;
     if (count_ == b.count) return;  // only skipped blocks: their dwell waits for the next
-    // The bounds once for the batch (its first block settled junction count - 2), and the plan
-    // from the junction it joined on.
-    const std::size_t joined = b.count > 0 ? b.count - 1 : 0;
-    if (replan(std::min(bounds_from_end(b.count >= 2 ? b.count - 2 : 0), joined), b.blocks.size() > 1)) return;
+    // The bounds and the plan once for the batch.
+    if (plan_joined(b.count, b.blocks.size() > 1)) return;
     // Undone: the window as the batch found it, and its blocks added one by one.
     head_ = b.head, count_ = b.count, goal_ = b.goal;
     for (std::size_t i = 0; i < count_; ++i) seg(i) = b.window[i];
-    pending_dwell_ = b.pending_dwell, max_width_ = b.max_width, context_span_ = b.context_span;
-    ramp_change_ = b.ramp_change, stats_.unfit = b.unfit, finished_ = b.finished;
-    next_known_ = false;
+    pending_dwell_ = b.pending_dwell, finished_ = b.finished;
+    restore(b.plan);
     ++stats_.batches_undone;
     for (const Block& block : b.blocks) add(block, Planning::now);
 }

@@ -107,28 +107,21 @@ void Lookahead::rejoin_some() {
     const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_, std::size_t{1}, rejoin_batch) : std::size_t{1});
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
-        undo_ = {ramp_change_, max_width_, context_span_, stats_.unfit};
+        undo_ = plan_scalars();
     }
-    for (std::size_t k = 0; k < n; ++k) {
-        take_waiting();
-        ++count_;
-        if (count_ >= 2) link(count_ - 2);
-        else classify(0);
-    }
-    // One plan for them all (as plan_batch): the bounds from the new end, the plan from the junction
-    // they joined on.
-    const std::size_t changed = bounds_from_end(before >= 2 ? before - 2 : 0);
+    for (std::size_t k = 0; k < n; ++k) take_waiting(), link_newest();
+    // One plan for them all, as plan_batch.
+    std::size_t changed = 0;
+    const bool planned = plan_joined(before, n > 1, &changed);
     tail_ = before > changed ? before - changed : 1;
-    if (replan(std::min(changed, before > 0 ? before - 1 : 0), n > 1)) return;
+    if (planned) return;
     // No plan short of the last resort, which is one block's: the window as they found it, and the
     // first of them alone.
     for (std::size_t i = 0; i < before; ++i) seg(i) = snapshot_[i];
     deferred_ += count_ - before;
     stats_.rejoined -= count_ - before;
     count_ = before;
-    ramp_change_ = undo_.ramp_change, max_width_ = undo_.max_width, context_span_ = undo_.context_span;
-    stats_.unfit = undo_.unfit;
-    next_known_ = false;
+    restore(undo_);
     ++stats_.batches_undone;
     take_waiting();
     join(Planning::now);

@@ -446,6 +446,19 @@ private:
     void rejoin_some();           // at each commit
     // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
     void join(Planning when);
+    void link_newest();  // join's first half: counted and linked to the block before, not planned
+    // Blocks joined after the first `before` (one or a batch): the bounds from the new end (the
+    // junctions before before - 2 were settled), the plan from the junction they joined on. As
+    // replan(); *changed: the lowest segment whose bounds changed.
+    bool plan_joined(std::size_t before, bool undoable = false, std::size_t* changed = nullptr);
+    // What a plan changes beside the segments, for a batch's undo (plan_batch, rejoin_some).
+    struct PlanScalars {
+        std::size_t ramp_change = 0;
+        double max_width = 0.0, context_span = 0.0;
+        std::uint64_t unfit = 0;
+    };
+    PlanScalars plan_scalars() const { return {ramp_change_, max_width_, context_span_, stats_.unfit}; }
+    void restore(const PlanScalars& p);
     // A block's segment as it comes: what its own geometry gives, nothing learned, a stop after it.
     void arrive(Segment& s) const;
     // The stop at the window's end is the program's.
@@ -498,11 +511,7 @@ private:
     std::uint32_t rejoin_clock_ = 0;  // commits with blocks waiting: the reach is measured every few
     std::uint32_t add_clock_ = 0;     // adds without: likewise
     std::size_t tail_ = 1;  // blocks before the last to join whose bounds that join changed (+ 1)
-    struct {  // what a batch of waiting blocks found, for its undo (with snapshot_)
-        std::size_t ramp_change = 0;
-        double max_width = 0.0, context_span = 0.0;
-        std::uint64_t unfit = 0;
-    } undo_;
+    PlanScalars undo_;  // what a batch of waiting blocks found, for its undo (with snapshot_)
     AxisVector goal_;
     Frozen frozen_;
 
@@ -535,9 +544,8 @@ private:
         std::vector<Segment> window;
         std::size_t head = 0, count = 0;
         AxisVector goal;
-        double pending_dwell = 0.0, max_width = 0.0, context_span = 0.0;
-        std::size_t ramp_change = 0;
-        std::uint64_t unfit = 0;
+        double pending_dwell = 0.0;
+        PlanScalars plan;
         bool finished = false;
     } batch_;
     void open_batch();
