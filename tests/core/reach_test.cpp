@@ -79,7 +79,7 @@ void check_long_programs(std::uint64_t seed, int count) {
 
 // On a dense path each block planned as it came planned again the blocks braking to the stop at
 // the end of the path it ended (44 of them at jerk 1e5, 130 us an add). Added to a window that
-// reaches four stops ahead, blocks wait and join 16 at a time under one plan. Counted in segment
+// reaches four stops ahead, blocks wait and join up to 16 at a time under one plan. Counted in segment
 // plans, not timed (firtp_worst_override times them).
 TEST(Reach, BlocksBeyondTheReachJoinInBatchesNotOneByOne) {
     const PlannerParameters machine = test::deep_queue_machine();
