@@ -83,8 +83,8 @@ static int max_blocks = firtp::defaults::tp_max_blocks;
 RTAPI_MP_INT(max_blocks, "blocks planned per period at most (" FIRTP_TP_DEFAULT_MAX_BLOCKS_TEXT ")");
 static int plan_budget_us = firtp::defaults::tp_plan_budget_us;
 RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (" FIRTP_TP_DEFAULT_PLAN_BUDGET_US_TEXT "; 0: max_blocks only)");
-static int arena_mb = 48;
-RTAPI_MP_INT(arena_mb, "memory reserved at load for the planner, MB (48: 4096 blocks take about 21)");
+static int arena_mb = 64;
+RTAPI_MP_INT(arena_mb, "memory reserved at load for the planner, MB (64: 4096 blocks take about 52)");
 
 namespace {
 

@@ -23,27 +23,6 @@ using test::run_ticks;
 
 namespace {
 
-// Limits, blended corners within their tolerance, the end exact and at rest.
-void expect_within_random(const test::RateRun& r, const std::vector<Block>& blocks, const PlannerParameters& p) {
-    ASSERT_TRUE(r.ended);
-    std::vector<AxisVector> points{AxisVector::Zero()};
-    std::vector<const Block*> ending;
-    for (const Block& b : blocks)
-        if ((b.target - points.back()).norm() >= min_block_length) points.push_back(b.target), ending.push_back(&b);
-    const Measured m = measure(r.samples, points, p.period);
-    ASSERT_TRUE(m.finite);
-    ASSERT_EQ(test::beyond_limits(r.samples, m, p), "");
-    ASSERT_EQ(m.corner_errors.size(), points.size() - 2);
-    for (std::size_t i = 0; i < m.corner_errors.size(); ++i) {
-        const Block& b = *ending[i];
-        const AxisVector in = points[i + 1] - points[i], out = points[i + 2] - points[i + 1];
-        if (b.termination != Termination::blend || in.normalized().dot(out.normalized()) > 1.0 - 1e-12) continue;
-        ASSERT_LE(m.corner_errors[i], b.tolerance * (1 + 1e-6) + 1e-9) << "corner after line " << b.line;
-    }
-    ASSERT_EQ(m.end_position, blocks.back().target);
-    ASSERT_EQ(r.samples.back().velocity, AxisVector::Zero());
-}
-
 // Programs of 200-500 blocks (support/random_machine.hpp: long_random_case) on windows of 64, 256
 // or 1024 blocks, all added as the window takes them, each planned as it comes (Planning::now, as
 // firtp_tp and firtp.so add); every other one with six rate changes, holds among them, then 100 %.
@@ -68,7 +47,7 @@ void check_long_programs(std::uint64_t seed, int count) {
         SCOPED_TRACE("program " + std::to_string(k) + " (" + std::to_string(c.blocks.size()) + " blocks, queue " +
                      std::to_string(p.queue_capacity) + ")");
         const test::RateRun r = test::run_with_rates(p, c.blocks, rates, run_ticks(p));
-        expect_within_random(r, c.blocks, p);
+        test::expect_within_random(r, c.blocks, p);
         if (r.stats.rejoined > 0) ++waited;
     }
     std::printf("%d long programs, blocks waited beyond the window in %d\n", programs, waited);

@@ -55,7 +55,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     : parameters_(parameters), limits_(smoothing_limits(parameters.limits)), machine_(parameters.limits), timeline_(&timeline),
       max_rate_(std::max(parameters.max_rate, 1.0)), capacity_(std::max<std::size_t>(parameters.queue_capacity, 2)),
       segments_(capacity_ + 1),  // one spare: a hold splits a block even when the window is full
-      goal_(start), sweep_(3 * segments_.size() + 64), saved_(segments_.size()), snapshot_(segments_.size()) {
+      goal_(start), sweep_(4 * segments_.size() + 64), saved_(segments_.size()), snapshot_(segments_.size()) {
     rules_.limits = limits_;
     rules_.t2 = jerk_time(limits_);
     sparse_.t2 = rules_.t2;
@@ -84,7 +84,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     machine_acceleration_ = std::sqrt(machine_acc);
     machine_jerk_ = std::sqrt(machine_jerk);
-    legs_.reserve(3 * segments_.size() + 64);
+    legs_.reserve(4 * segments_.size() + 64);  // a, p, b and an overlap's leg a block
     leg_of_.resize(segments_.size());
     leg_begin_.resize(segments_.size());
     when_.resize(segments_.size());
@@ -156,7 +156,13 @@ Lookahead::Step Lookahead::ramp_step(std::size_t i, double dv) const { return ma
 
 Lookahead::Step Lookahead::junction_step(std::size_t i) const {
     const Segment& s = seg(i);
+    if (overlapped(i)) return make_step(s.next_a * seg(i + 1).u, s.junction);  // the next pulse rises
     return make_step(s.next_a * seg(i + 1).u - s.b * s.u, s.junction);
+}
+
+Lookahead::Step Lookahead::overlap_fall(std::size_t i) const {
+    const Segment& s = seg(i);
+    return make_step(-s.b * s.u, s.junction);
 }
 
 StepShape Lookahead::sized_shape(std::size_t i, double v, const AxisVector& direction) const {
@@ -187,7 +193,7 @@ Lookahead::Step Lookahead::stop_step(std::size_t i) const { return sized(i) ? si
 Lookahead::Step Lookahead::entry_step(std::size_t i) const {
     if (i == 0 && frozen_.moving) return frozen_.step;
     if (entry_is_stop(i)) return sized(i) ? sized_step(i, seg(i).a) : ramp_step(i, seg(i).a);
-    return junction_step(i - 1);
+    return overlapped(i - 1) ? overlap_fall(i - 1) : junction_step(i - 1);
 }
 
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
@@ -196,12 +202,17 @@ StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
+    if (overlapped(i - 1)) return {a * prev.alpha, -prev.u, prev.junction.t2, prev.u_box};  // the pulse before falls
     return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
 }
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
     if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop
+    if (overlapped(i)) {  // the next pulse rises
+        const Segment& n = seg(i + 1);
+        return {b * n.alpha, n.u, s.junction.t2, n.u_box};
+    }
     return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box};
 }
 
@@ -328,6 +339,7 @@ void Lookahead::set_junction(std::size_t i) {
     s.out_ramp = seg(i + 1).in_ramp = Regime{-1.0};
     const auto stop = [&s](CornerBound why) {  // the junction is a stop, for this reason
         s.kind = Kind::stop;
+        s.overlap = 0.0;
         s.corner_cap = 0.0;
         s.cap_bound = why;
         s.junction = s.regime;
@@ -373,6 +385,58 @@ void Lookahead::set_junction(std::size_t i) {
         if (!s.dense) s.out_ramp = ramp;
         if (!n.dense) seg(i + 1).in_ramp = ramp;
     }
+    set_overlap(i);
+}
+
+// Overlap where it is safe at every speed the corner may take, up to V_max = the blocks' feeds at
+// 100 % (above, an overlap long enough to pay would break the tolerance: the corner is held to
+// V_max at a higher override), and costs nothing else:
+//   - a turn of 120 degrees or more: the leg across it, V (u + u'), is no faster than V (nor, at
+//     V_max, than an axis' velocity limit);
+//   - both blocks sparse and the corner in the machine's regime, passed at V_max as one step (the
+//     tolerance does not bound it); the corner tolerance, not the contour one (the legs would
+//     stand in for the programmed path there);
+//   - the steps' boxes apart by the spacing rules at V_max (Tk only grows as V falls, the boxes
+//     shrink), and the corner error within the tolerance at V_max, measured at the middle of the
+//     leg across the corner (an upper bound of the closest approach; s overlap once both kernels
+//     have passed there, Eq. 13/14's limit);
+//   - each block keeps a leg at V_max as long as those widths after giving up overlap at both ends.
+void Lookahead::set_overlap(std::size_t i) {
+    Segment& s = seg(i);
+    const Segment& n = seg(i + 1);
+    s.overlap = 0.0;
+    if (s.kind != Kind::corner || s.no_overlap || !s.junction.sparse || s.dense || n.dense || !s.regime.sparse || !n.regime.sparse ||
+        parameters_.tolerance_meaning != ToleranceMeaning::corner_point || !std::isfinite(s.tolerance) || !(s.turn.s > 0.0))
+        return;
+    const AxisVector across = s.u + n.u;
+    if (across.squaredNorm() > 1.0) return;  // a turn of less than 120 degrees
+    const double v = std::min(s.feed, n.feed);
+    if (!(v > 0.0) || s.corner_cap < v || s.learned_cap < v) return;
+    if (across.norm() > 0.0 && velocity_cap(limits_, unit(across)) < v * across.norm()) return;
+    const Step rise = make_step(v * n.u, s.junction), fall = make_step(-v * s.u, s.junction);
+    const double peak = v / std::max(rise.box, rise.t2) + v / std::max(fall.box, fall.t2);  // both steps' at once
+    const double epsilon = s.tolerance * (1.0 - plan_margin) - chord_margin(peak, jerk_norm_, parameters_.period);
+    // At the middle of the leg across the corner, Tk / 2 from both steps, each pulse has moved
+    // R(Td / 2 + Tk / 2) = Tk / 2 + lead_at(Tk / 2) of the way past it: the tool is there
+    // V (u' f_rise - u f_fall) from the corner point. That grows with the overlap, and with V at
+    // a given overlap (the kernels widen, Tk shrinks): an overlap that passes at V_max passes below.
+    auto error = [&](double overlap) {
+        const double half = 0.5 * overlap / v;
+        return v * (n.u * (half + rise.kernel.lead_at(half)) - s.u * (half + fall.kernel.lead_at(half))).norm();
+    };
+    double lo = v * rules_.spacing(rise.shape(), fall.shape()), hi = epsilon / s.turn.s;  // error >= s overlap
+    if (!(lo > 0.0) || !(hi >= lo) || error(lo) > epsilon) return;
+    if (error(hi) > epsilon)  // the kernels still move at the middle: bisect (the error has no closed inverse there)
+        for (int k = 0; k < 48 && hi - lo > 1e-12 * hi; ++k) (error(0.5 * (lo + hi)) <= epsilon ? lo : hi) = 0.5 * (lo + hi);
+    else
+        lo = hi;
+    const double overlap = lo;
+    const double widths = std::max(rise.kernel.width(), fall.kernel.width());
+    const double own = i == 0 ? s.length - frozen_.consumed : s.length;
+    for (double length : {own, n.length})
+        if (overlap > length / 3.0 || length - 2.0 * overlap < v * widths) return;
+    s.overlap = overlap;
+    if (s.corner_cap > v) s.corner_cap = v, s.cap_bound = CornerBound::tolerance;
 }
 
 Lookahead::Regime Lookahead::ramp_sharing(const Regime& corner) const {
@@ -459,6 +523,7 @@ void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
     set_turn(s, seg(i + 1).u);
     s.learned_cap = infinity;  // (what the checks learned at its old end)
+    s.no_overlap = false;
     s.ramps_capped = true;
     s.one_speed_start = false;
     s.kind = stops_whatever_follows(s) || seg(i + 1).dwell > 0.0
@@ -883,7 +948,7 @@ void Lookahead::forward(std::size_t from) {
             const double exit = prev.enter + prev.x0 + prev.xp + prev.x1;
             if (prev.kind == Kind::stop)  // as next_step() starts it
                 prev.rest = std::max(prev.rest, start_after_stop(i, exit, stop_step(i - 1), 0.5 * entry_step(i).kernel.width()) - exit);
-            s.enter = exit + (prev.kind == Kind::stop ? prev.rest : 0.0);
+            s.enter = exit + (prev.kind == Kind::stop ? prev.rest : prev.overlap_time());
         }
     }
 }

@@ -107,8 +107,10 @@ void Lookahead::refresh_current_leg() {
     leg.tv = n.centre - centre;
     const double length = frozen_.speed * leg.tv;
     leg.delta = s.u * length;
-    leg.end = n.kind == StepKind::ramp ? AxisVector(s.start + s.u * (frozen_.consumed + length)) : s.end;
-    leg.last_of_block = n.kind != StepKind::ramp && !s.hold_split;  // a hold's split is not the block's end
+    const bool overlap = n.kind == StepKind::junction && overlapped(0);  // the leg across the corner ends the block
+    leg.end = n.kind == StepKind::ramp ? AxisVector(s.start + s.u * (frozen_.consumed + length))
+                                       : AxisVector(s.end - s.u * (overlap ? s.overlap : 0.0));
+    leg.last_of_block = n.kind != StepKind::ramp && !s.hold_split && !overlap;  // a hold's split is not the block's end
     leg.fall = (n.centre - 0.5 * n.step.kernel.width()) - (centre - 0.5 * frozen_.step.kernel.width());
     leg.falling = n.step.kernel;
     max_width_ = std::max(max_width_, n.step.kernel.width());
@@ -135,6 +137,7 @@ void Lookahead::pop_front(bool stop) {
         r.predicted_error = s.exact_stop || r.exact_stop ? 0.0 : s.predicted_error;
         r.bound = r.exact_stop ? stop_bound(s) : s.bound;
         r.axis = s.bound_axis;
+        r.Tk = r.exact_stop ? 0.0 : s.overlap_time();
         if (!last) {  // the end of the program is not a corner
             reports_[(report_head_ + report_count_) % reports_.size()] = r;
             if (report_count_ < reports_.size()) ++report_count_;
@@ -180,6 +183,7 @@ void Lookahead::freeze(const NextStep& n) {
             break;
         }
         case StepKind::junction:
+            if (overlapped(0)) return freeze_overlap(n, tick, offset);
             pop_front(false);
             frozen_.consumed = 0.0;
             break;
@@ -192,27 +196,66 @@ void Lookahead::freeze(const NextStep& n) {
             frozen_.consumed = 0.0;
             break;
     }
-    frozen_.step = n.step;
+    frozen_.any = true;
+    frozen_.start = n.kind == StepKind::start;
+    enter_front(n.step, tick, offset, n.speed_after, n.kind == StepKind::junction, leg_start);
+}
+
+// The two steps of an overlapped corner freeze together when the first one's kernel starts: the
+// leg across the corner (the block's last) goes to the timeline, and the second step, Tk later,
+// becomes the frozen one, entering the next block `overlap` along it.
+void Lookahead::freeze_overlap(const NextStep& n, std::int64_t tick, double offset) {
+    const Segment& s = seg(0);
+    const Step fall = overlap_fall(0);
+    const double tk = s.overlap_time(), overlap = s.overlap;
+    const AxisVector next_u = seg(1).u;
+    Leg leg;
+    leg.rising = n.step.kernel;
+    leg.falling = fall.kernel;
+    leg.rise_tick = tick;
+    leg.rise_offset = offset - 0.5 * n.step.kernel.width();
+    normalise(leg.rise_tick, leg.rise_offset, parameters_.period);
+    leg.tv = tk;
+    leg.fall = tk + 0.5 * (n.step.kernel.width() - fall.kernel.width());
+    leg.delta = (s.u + next_u) * overlap;
+    leg.end = s.end + next_u * overlap;
+    leg.line = s.line;
+    leg.type = s.type;
+    leg.last_of_block = true;
+    max_width_ = std::max({max_width_, n.step.kernel.width(), fall.kernel.width()});
+    timeline_->widen(max_width_);
+    timeline_->push(leg);
+    ++stats_.overlapped;
+    pop_front(false);
+    frozen_.consumed = overlap;
+    frozen_.any = true;
+    frozen_.start = false;
+    offset += tk;
+    normalise(tick, offset, parameters_.period);
+    enter_front(fall, tick, offset, n.speed_after, true, leg.end);
+}
+
+void Lookahead::enter_front(const Step& step, std::int64_t tick, double offset, double speed, bool junction, const AxisVector& leg_start) {
+    const double period = parameters_.period;
+    frozen_.step = step;
     frozen_.tick = tick;
     frozen_.offset = offset;
-    frozen_.any = true;
-    frozen_.speed = n.speed_after;
-    frozen_.junction = n.kind == StepKind::junction;
-    frozen_.start = n.kind == StepKind::start;
-    frozen_.moving = n.speed_after > 0.0 && count_ > 0;
+    frozen_.speed = speed;
+    frozen_.junction = junction;
+    frozen_.moving = speed > 0.0 && count_ > 0;
     if (!frozen_.moving) return;
     const Segment& s = seg(0);
     Leg leg;
-    leg.rising = n.step.kernel;
+    leg.rising = step.kernel;
     std::int64_t rise_tick = tick;
-    double rise_offset = offset - 0.5 * n.step.kernel.width();
+    double rise_offset = offset - 0.5 * step.kernel.width();
     normalise(rise_tick, rise_offset, period);
     leg.rise_tick = rise_tick;
     leg.rise_offset = rise_offset;
     leg.line = s.line;
     leg.type = s.type;
     leg.end = leg_start;  // refresh_current_leg sets delta, tv, end and the falling edge
-    max_width_ = std::max(max_width_, n.step.kernel.width());
+    max_width_ = std::max(max_width_, step.kernel.width());
     timeline_->widen(max_width_);
     timeline_->push(leg);
     refresh_current_leg();
@@ -327,9 +370,24 @@ void Lookahead::build_legs(std::size_t first) {
         }
         const bool stop = i + 1 == count_ || s.kind == Kind::stop;
         leg_to(stop ? stop_step(i) : junction_step(i), t + s.x0 + s.xp + s.x1);
+        when_[i] = centre;
+        if (!stop && overlapped(i)) {  // the leg across the corner, then the pulse falls
+            const Step fall = overlap_fall(i);
+            const double tk = s.overlap_time();
+            TimedLeg tl;
+            tl.tv = tk;
+            tl.delta = (s.u + seg(i + 1).u) * s.overlap;
+            tl.rise = centre - 0.5 * step.kernel.width();
+            tl.fall = (centre + tk - 0.5 * fall.kernel.width()) - tl.rise;
+            tl.rising = step.kernel;
+            tl.falling = fall.kernel;
+            legs_.push_back(tl);
+            when_[i] = centre + 0.5 * tk;  // the middle of that leg (the closest approach's guess)
+            step = fall;
+            centre += tk;
+        }
         last_step = step;
         leg_of_[i] = legs_.empty() ? 0 : legs_.size() - 1;
-        when_[i] = centre;
         t = centre + (stop ? s.rest : 0.0);
         s.width = 0.0;
         for (std::size_t m = leg_begin_[i]; m < legs_.size(); ++m)
@@ -520,7 +578,9 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             ApproachBounds bounds;
             if (!sharp && when_[i] - 32.0 * period >= begin)
                 bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - check_margin)};
-            const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds);
+            // (Overlapped, the leg across the corner ends `overlap` along the next block.)
+            const AxisVector offset = overlapped(i) ? AxisVector(-s.overlap * seg(i + 1).u) : AxisVector(AxisVector::Zero());
+            const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds, offset);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];
         }
@@ -645,6 +705,13 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
             seg(bad).ramps_capped = false;
             junction_caps(bad);
             from = std::min({from, bad, take_ramp_change()});
+            continue;
+        }
+        // An overlapped corner that failed goes back to one step before it is lowered.
+        if (overlapped(bad)) {
+            seg(bad).no_overlap = true;
+            junction_caps(bad);
+            from = std::min({from, bad, backward(bad + 1), take_ramp_change()});
             continue;
         }
         // A block that ramped on from its start keeps the start's speed before its corner is

@@ -371,8 +371,17 @@ double chord_distance(const AxisVector& p, const AxisVector& q) {
 }  // namespace
 
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period, int phases,
-                          const ApproachBounds& bounds) {
+                          const ApproachBounds& bounds, const AxisVector& offset) {
     Approach best{HUGE_VAL, guess, HUGE_VAL, HUGE_VAL, guess};
+    // Positions from the corner point, `offset` past the end of legs[corner].
+    auto relative_position = [&](std::span<const TimedLeg> l, std::size_t c, double t) -> AxisVector {
+        return firtp::relative_position(l, c, t) - offset;
+    };
+    auto relative_state = [&](std::span<const TimedLeg> l, std::size_t c, double t) {
+        AxisState s = firtp::relative_state(l, c, t);
+        s.position -= offset;
+        return s;
+    };
     const double sag = period * period / 8.0 * bounds.acceleration;
     // Any point of the path is at least as far from the corner as the closest: where the guess
     // itself is close enough, so is the approach.

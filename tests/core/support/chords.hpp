@@ -4,7 +4,7 @@
 
 #include "limits.hpp"
 #include "rate_run.hpp"
-#include "sampled_limits.hpp"
+#include "within.hpp"
 
 #include <firtp/measure.hpp>
 #include <firtp/planner.hpp>
@@ -45,22 +45,6 @@ inline PlannerParameters deep_queue_machine() {
     machine.queue_capacity = 4096;
     machine.max_rate = 1.5;
     return machine;
-}
-
-// A program whose path never meets itself, run whole: the limits, also in finite differences,
-// every corner within its tolerance once, the end exact and at rest.
-inline void expect_within(const RateRun& r, const std::vector<Block>& program, const PlannerParameters& p) {
-    std::vector<AxisVector> points{AxisVector::Zero()};
-    for (const Block& b : program) points.push_back(b.target);
-    const Measured m = measure(r.samples, points, p.period);
-    ASSERT_TRUE(r.ended);
-    ASSERT_TRUE(m.finite);
-    ASSERT_EQ(beyond_limits(r.samples, m, p), "");
-    ASSERT_EQ(m.corner_errors.size(), program.size() - 1);  // each corner passed once
-    for (std::size_t i = 0; i < m.corner_errors.size(); ++i)
-        EXPECT_LE(m.corner_errors[i], program[i].tolerance * (1 + 1e-6)) << "corner after line " << program[i].line;
-    EXPECT_EQ(m.end_position, program.back().target);
-    EXPECT_EQ(r.samples.back().velocity, AxisVector::Zero());
 }
 
 }  // namespace firtp::test

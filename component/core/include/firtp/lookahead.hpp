@@ -145,6 +145,13 @@ private:
         // The junction after it (valid once the next segment exists; the last one ends in a stop).
         Turn turn;
         double turn_box = -1.0;    // rules_.unit_box(turn.direction)
+        // The paper's overlap (Sec. 3) at a corner turning by 120 degrees or more, |u + u'| <= 1: the
+        // next block's pulse rises Tk = overlap / V before this one's falls, so the junction is two
+        // steps with a leg at V (u + u') between them, never faster than V, and the corner takes
+        // Tk less. `overlap` is the length each block gives up to that leg (0: one step); the
+        // corner error is then s overlap at any V up to the blocks' feeds (set_overlap).
+        double overlap = 0.0;
+        bool no_overlap = false;   // the check refused it here: one step
         Kind kind = Kind::stop;
         Regime junction;           // the junction step's smoothing
         double turn_alpha = 0.0;   // its T1 per unit of corner speed, in that regime
@@ -170,6 +177,10 @@ private:
         int bound_axis = -1;
         double enter = 0.0;        // forward pass: its entry step's centre, s (timeline clock)
         double width = 0.0;        // the widest kernel of its legs when build_legs last made them
+
+        double overlap_length() const { return kind == Kind::corner ? overlap : 0.0; }
+        // Tk: the leg across the corner, between its two steps (0: one step).
+        double overlap_time() const { return kind == Kind::corner && overlap > 0.0 && b > 0.0 ? overlap / b : 0.0; }
     };
 
     // A step of the plan: velocity change, the box of its first stage, its kernel.
@@ -212,7 +223,11 @@ private:
     }
     Segment& seg(std::size_t i) { return segments_[ring(i)]; }
     const Segment& seg(std::size_t i) const { return segments_[ring(i)]; }
-    double seg_length(std::size_t i) const { return i == 0 ? seg(0).length - frozen_.consumed : seg(i).length; }
+    // The length its legs cover: less what the motion used and the overlaps at its ends.
+    double seg_length(std::size_t i) const {
+        const double rest = i == 0 ? seg(0).length - frozen_.consumed : seg(i).length - seg(i - 1).overlap_length();
+        return i + 1 < count_ ? rest - seg(i).overlap_length() : rest;
+    }
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
     bool exit_is_stop(std::size_t i) const { return i + 1 == count_ || seg(i).kind == Kind::stop; }
@@ -258,7 +273,9 @@ private:
     StepShape sized_shape(std::size_t i, double v, const AxisVector& direction) const;
     void resize_sized(std::size_t i, double v, StepShape& shape) const;  // sized_shape()'s box and t2 at speed v
     Step sized_step(std::size_t i, double dv) const;  // dv along u
-    Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop)
+    Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop); overlapped: the first
+    Step overlap_fall(std::size_t i) const;          // an overlapped junction's second step: segment i's pulse falls
+    bool overlapped(std::size_t i) const { return i + 1 < count_ && seg(i).overlap_length() > 0.0; }
     Step stop_step(std::size_t i) const;             // segment i's stop at its end
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
@@ -270,6 +287,7 @@ private:
     void classify(std::size_t i);           // dense or not, from its length and its junctions
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i (and ramp_change_)
     void set_junction(std::size_t i);       // ... those themselves
+    void set_overlap(std::size_t i);        // ... and its overlap (Segment::overlap)
     bool smooth(std::size_t i) const;       // junction i does not slow the blocks down
     bool slower_long(std::size_t k, std::size_t i) const;  // k is a long block slower than i
     double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
@@ -393,6 +411,9 @@ private:
     NextStep next_step() const;
     bool final_for_start() const;
     void freeze(const NextStep& next);
+    void freeze_overlap(const NextStep& next, std::int64_t tick, double offset);  // both steps of an overlapped corner
+    // `step`, centred at tick * period + offset, is the frozen one; the leg after it at `speed`.
+    void enter_front(const Step& step, std::int64_t tick, double offset, double speed, bool junction, const AxisVector& leg_start);
     void pop_front(bool stop);
     void refresh_current_leg();
     // false: `undoable` (a batch of blocks) and no plan passed short of the last resort.
@@ -417,7 +438,7 @@ private:
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
     // From a segment's entry step to the next segment's: its legs, and a stop's rest.
-    static double span(const Segment& s) { return s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : 0.0); }
+    static double span(const Segment& s) { return s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : s.overlap_time()); }
     std::size_t context(std::size_t first) const;  // where a check from `first` first builds its legs (a guess)
     // The largest k <= first such that every leg a check from k leaves out has come to rest by
     // `until` (s from now), as far as this build (from `from`) and the segments' widths tell.

@@ -134,8 +134,11 @@ struct ApproachBounds {
 // With `bounds`: where the guess's own distance, or the smooth approach's, plus the chords' sag is
 // `enough`, that is the answer (every point of the path is at least as far as the closest, and the
 // chord across any time is within the sag of the path there); nothing is sampled then.
+// `offset`: the corner point lies that far past the end of legs[corner] (a corner the legs
+// overlap: the leg across it ends past the corner, lookahead.hpp).
 Approach closest_approach(std::span<const TimedLeg> legs, std::size_t corner, double guess, double period,
-                          int phases = 1, const ApproachBounds& bounds = {});
+                          int phases = 1, const ApproachBounds& bounds = {},
+                          const AxisVector& offset = AxisVector::Zero());
 
 // |acceleration| and |jerk| of legs whose steps are all smoothed by `chain` (the paper's mode),
 // bounded within [from, to]: a step acts for Td from its kernel's start; the chain's density is at

@@ -31,9 +31,8 @@ struct CornerReport {
     bool exact_stop = false;
     CornerBound bound = CornerBound::feed;
     int axis = -1;                          // the most loaded axis of the corner step (tolerance, room)
-    // The paper's mode only: overlap used and what the tolerance alone allows.
-    double Tk = 0.0;
-    double Tk_tolerance = 0.0;
+    double Tk = 0.0;            // overlap used (limit-driven: turns of 120 degrees and more, else 0)
+    double Tk_tolerance = 0.0;  // the paper's mode only: what the tolerance alone allows
 };
 
 // Counts since construction.
@@ -48,6 +47,7 @@ struct PlannerStats {
     std::uint64_t batches_undone = 0; // batches (added at_update, or waiting blocks joining) whose plan failed: one by one
     std::uint64_t segments_planned = 0;  // forward plans of a segment (the passes' work)
     std::uint64_t rejoined = 0;       // blocks that waited beyond the window's reach and joined it
+    std::uint64_t overlapped = 0;     // corners passed with the blocks' pulses overlapping (Tk > 0, two steps)
 };
 
 }  // namespace firtp
