@@ -33,7 +33,7 @@ detail tables go between the markers of FILE instead). One HAL session at a time
 5 minutes with --master, 2 without.
 
 --cam DIR adds real CAM programs (CAM_PROGRAMS from DIR, prepared as issue 13 ran them, and a
-laser-style program written here), about 4 minutes more; their table goes between the
+laser-style program written here), about 7 minutes more; their table goes between the
 'compare.py cam' markers of --readme. --cam-only runs and rewrites only those (the five programs'
 table keeps its S-curve columns from a --master run).
 """
@@ -58,23 +58,26 @@ PROGRAMS = [
     ("arcs.ngc", "arcs: G2/G3 in 3 planes, helix, F2400 G64 P0.02"),
 ]
 
-# --cam DIR: real CAM programs (pcb2gcode's testing/gerbv_example outputs, GPL-3.0: not in this
-# repository), prepared as issue 13 measured them: G64 P0.02 after the first G90, pauses, tool
-# changes and dwells removed; and a laser-style program written here (LASER).
+# --cam DIR: real CAM programs (pcb2gcode's testing/gerbv_example outputs, GPL-3.0, and LinuxCNC's
+# nc_files/3D_Chips.ngc, GPL-2.0: not in this repository), prepared as issue 13 measured them:
+# pauses, tool changes and dwells removed, and (the pcb2gcode ones) G64 P0.02 after the first G90;
+# 3D_Chips keeps its own G64 P0.1. And a laser-style program written here (LASER).
 CAM_PROGRAMS = [
-    ("pcb2gcode__milldrill.ngc", "pcb2gcode drill file (multivibrator milldrill.ngc)"),
-    ("pcb2gcode__back.ngc", "pcb2gcode isolation milling, 21,624 moves (D1MiniGSR back.ngc)"),
+    ("pcb2gcode__milldrill.ngc", "pcb2gcode drill file (multivibrator milldrill.ngc)", True),
+    ("pcb2gcode__back.ngc", "pcb2gcode isolation milling, 21,624 moves (D1MiniGSR back.ngc)", True),
+    ("lcnc__3D_Chips.ngc", "LinuxCNC's 3D_Chips.ngc: ball-nose surfacing, 1,215 moves, its own G64 P0.1", False),
 ]
 LASER = "laser-style: M3/M5 around each of 20 squares, F1200 G64 P0.05"
 CAM_BEGIN, CAM_END = "<!-- compare.py cam: begin -->", "<!-- compare.py cam: end -->"
 
 
-def prepare_cam(src, dst):
-    """src as issue 13 ran it: G64 P0.02 after its first G90; no M0, M1, M6, T, G04."""
-    out, placed = [], False
+def prepare_cam(src, dst, tolerance=True):
+    """src as issue 13 ran it: no M0, M1, M6, T, G04 (line numbers aside); with `tolerance`, G64 P0.02
+    after its first G90."""
+    out, placed = [], not tolerance
     for line in open(src):
         word = line.lstrip().upper()
-        if re.match(r"(M0?0|M0?1|M0?6|T\d|G0?4)(\D|$)", word):
+        if re.match(r"(N\d+\s*)?(M0?0|M0?1|M0?6|T[\d#]|G0?4)(\D|$)", word):
             continue
         out.append(line)
         if not placed and re.match(r"G90(\D|$)", word):
@@ -137,6 +140,16 @@ def g64_p(path):
         return None
     inches = re.search(r"\bG20(\D|$)", text[:m.start()], re.I | re.M) is not None
     return float(m.group(1)) * (25.4 if inches else 1.0)
+
+
+def first_lines(errors):
+    """Each different error's first line (LinuxCNC's own messages run over several, and repeat)."""
+    seen = []
+    for e in errors:
+        line = e.strip().splitlines()[0] if e.strip() else ""
+        if line and line not in seen:
+            seen.append(line)
+    return "; ".join(seen)
 
 
 def good(report):
@@ -275,7 +288,7 @@ def main():
         detail.append(detail_row(label, name, report))
         print(detail[-1], flush=True)
         if report is None or not report.get("completed"):
-            notes.append("%s, %s: %s" % (label, name, "; ".join(report.get("errors", [])) if report else "no recording"))
+            notes.append("%s, %s: %s" % (label, name, first_lines(report.get("errors", [])) if report else "no recording"))
         elif report.get("end_error_mm", 0.0) > 1e-6:
             notes.append("%s, %s: the tool rests %.3g mm from the program's end" % (label, name, report["end_error_mm"]))
         if p is not None and report is not None and max(report["max_corner_error_mm"],
@@ -308,13 +321,13 @@ def main():
             scratch = tempfile.mkdtemp(prefix="firtp-compare-cam.")
             os.chmod(scratch, 0o755)
             cams = []
-            for program, label in CAM_PROGRAMS:
+            for program, label, tolerance in CAM_PROGRAMS:
                 src = os.path.join(a.cam, program)
                 if not os.path.exists(src):
                     print("--cam: %s not found" % src)
                     return 1
                 cams.append((os.path.join(scratch, program), label))
-                prepare_cam(src, cams[-1][0])
+                prepare_cam(src, cams[-1][0], tolerance)
             cams.append((os.path.join(scratch, "laser.ngc"), LASER))
             write_laser(cams[-1][0])
             for path, label in cams:
@@ -334,8 +347,9 @@ def main():
     cam_table = []
     if cam_results:
         cam_table = ["Real CAM programs through LinuxCNC's interpreter, the same machine and run series (%s; "
-                     "`--cam`: G64 P0.02 after the first G90, M0, M1, M6, T and G04 removed; the drill file is in "
-                     "inches, its P0.02 is 0.508 mm; the isolation milling sets its own G64 P0.01 in mm after it):"
+                     "`--cam`: M0, M1, M6, T and G04 removed, G64 P0.02 after the first G90 of the pcb2gcode programs; the "
+                     "drill file is in inches, its P0.02 is 0.508 mm; the isolation milling sets its own G64 P0.01 in mm "
+                     "after it; 3D_Chips keeps its G64 P0.1):"
                      % time.strftime("%Y-%m-%d"), ""] + cycle_table(cam_results, scurve)
 
     elapsed = time.time() - began
