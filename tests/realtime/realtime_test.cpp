@@ -177,11 +177,19 @@ TEST_P(PlannerRealTime, AddAndUpdateNeitherAllocateNorLock) {
             ends += bursts > 0;
             ++bursts;
             const int n = 1 + static_cast<int>(unit(rng) * 40);
+            // A third of the bursts zig-zag (2 mm legs turning by 174 degrees): corners overlapped by Tk.
+            const bool zig_zag = unit(rng) < 0.3;
             for (int i = 0; i < n && planner.free() > 0; ++i) {
                 Block b;
-                for (int a = 0; a < 3; ++a) b.target[a] = target[a] + 20.0 * (unit(rng) - 0.5);
-                b.feed = 10 + 290 * unit(rng);
-                b.tolerance = 0.01 + 0.2 * unit(rng);
+                if (zig_zag) {
+                    b.target = target;
+                    b.target[0] += i % 2 == 0 ? 2.0 : -2.0;
+                    b.target[1] += 0.105;
+                } else {
+                    for (int a = 0; a < 3; ++a) b.target[a] = target[a] + 20.0 * (unit(rng) - 0.5);
+                }
+                b.feed = zig_zag ? 20 + 30 * unit(rng) : 10 + 290 * unit(rng);
+                b.tolerance = zig_zag ? 0.3 + 0.2 * unit(rng) : 0.01 + 0.2 * unit(rng);
                 ASSERT_EQ(planner.add(b), Result::ok);
                 target = b.target;
             }
@@ -202,9 +210,13 @@ TEST_P(PlannerRealTime, AddAndUpdateNeitherAllocateNorLock) {
         }
     }
     expect_clean(totals, "Planner::add and Planner::update");
-    std::printf("  %d bursts of blocks ended exactly on their target, %d aborts\n", ends, aborts);
+    std::printf("  %d bursts of blocks ended exactly on their target, %d aborts, %llu corners overlapped\n", ends, aborts,
+                static_cast<unsigned long long>(planner.stats().overlapped));
     EXPECT_GT(aborts, 10);
     EXPECT_GT(ends, 100);
+    if (GetParam()) {  // at the limits: turns overlapped by Tk, counted too
+        EXPECT_GT(planner.stats().overlapped, 100u);
+    }
 }
 INSTANTIATE_TEST_SUITE_P(Machines, PlannerRealTime, ::testing::Values(true, false), machine_name);
 
