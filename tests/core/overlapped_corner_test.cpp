@@ -80,6 +80,35 @@ TEST(OverlappedCorner, ZigZagSlotCutsItsTurnsWithinTheTolerance) {
     EXPECT_EQ(r.stats.overlapped, program.size() - 1);
 }
 
+// Once a turn's first step has started, the tool runs on to its second (Tk later) before a hold
+// can brake: at a low override Tk = overlap / V would grow without end (0.24 s at 5 %, twice the
+// bound). The overlap shrinks there instead (Segment::overlap_tk): holds at every moment of the
+// slot, at overrides from 1 % to 120 %, on both jerk limits, come to rest within hold_time_bound().
+TEST(OverlappedCorner, HoldsAtAnyOverrideStopWithinTheBound) {
+    for (double jerk : {5e6, 1e5})
+        for (double feed : {2540.0 / 60.0, 10.0})
+            for (double rate : {0.01, 0.05, 0.2, 1.0, 1.2}) {
+                PlannerParameters p = compare_machine();
+                p.limits = test::uniform_limits(300.0, 5000.0, jerk);
+                p.max_rate = 1.2;
+                const std::vector<Block> program = zig_zag(6, 2.0, 174.0 * M_PI / 180.0, feed, 0.508);
+                const int duration = static_cast<int>(path_length(program) / (feed * rate) / p.period);
+                double worst = 0.0;
+                std::uint64_t overlapped = 0;
+                for (int tick = 20; tick < duration; tick += std::max(1, duration / 80)) {
+                    const test::RateRun r = test::run_with_rates(p, program, {{1, rate}, {tick, 0.0}, {tick + 3000, 1.0}});
+                    ASSERT_TRUE(r.ended);
+                    worst = std::max(worst, r.longest_stop);
+                    overlapped += r.stats.overlapped;
+                }
+                SCOPED_TRACE("jerk " + std::to_string(jerk) + ", feed " + std::to_string(feed) + ", rate " + std::to_string(rate));
+                EXPECT_LE(worst, hold_time_bound(p) + 2 * p.period);
+                if (jerk == 5e6 || feed == 10.0) {  // (at 1e5 and F100 in/min the turns are bound by the tolerance)
+                    EXPECT_GT(overlapped, 0u);
+                }
+            }
+}
+
 // Turns of less than 120 degrees are not overlapped: the leg across them would be faster than
 // the feed.
 TEST(OverlappedCorner, TurnsBelow120DegreesAreOneStep) {
@@ -124,6 +153,7 @@ TEST(OverlappedCorner, RandomZigZagsOnRandomMachines) {
         SCOPED_TRACE("program " + std::to_string(k));
         const test::RateRun r = test::run_with_rates(p, program, rates, static_cast<std::int64_t>(400.0 / p.period));
         test::expect_within_random(r, program, p);
+        EXPECT_LE(r.longest_stop, hold_time_bound(p) + 2 * p.period);  // a hold after a turn's first step too
         overlapped += r.stats.overlapped;
         corners += program.size() - 1;
     }

@@ -84,6 +84,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     }
     machine_acceleration_ = std::sqrt(machine_acc);
     machine_jerk_ = std::sqrt(machine_jerk);
+    hold_bound_ = hold_time_bound(parameters_);
     legs_.reserve(4 * segments_.size() + 64);  // a, p, b and an overlap's leg a block
     leg_of_.resize(segments_.size());
     leg_begin_.resize(segments_.size());
@@ -156,7 +157,7 @@ Lookahead::Step Lookahead::ramp_step(std::size_t i, double dv) const { return ma
 
 Lookahead::Step Lookahead::junction_step(std::size_t i) const {
     const Segment& s = seg(i);
-    if (overlapped(i)) return make_step(s.next_a * seg(i + 1).u, s.junction);  // the next pulse rises
+    if (split(i)) return make_step(s.next_a * seg(i + 1).u, s.junction);  // the next pulse rises
     return make_step(s.next_a * seg(i + 1).u - s.b * s.u, s.junction);
 }
 
@@ -193,7 +194,7 @@ Lookahead::Step Lookahead::stop_step(std::size_t i) const { return sized(i) ? si
 Lookahead::Step Lookahead::entry_step(std::size_t i) const {
     if (i == 0 && frozen_.moving) return frozen_.step;
     if (entry_is_stop(i)) return sized(i) ? sized_step(i, seg(i).a) : ramp_step(i, seg(i).a);
-    return overlapped(i - 1) ? overlap_fall(i - 1) : junction_step(i - 1);
+    return split(i - 1) ? overlap_fall(i - 1) : junction_step(i - 1);
 }
 
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
@@ -435,7 +436,13 @@ void Lookahead::set_overlap(std::size_t i) {
     const double own = i == 0 ? s.length - frozen_.consumed : s.length;
     for (double length : {own, n.length})
         if (overlap > length / 3.0 || length - 2.0 * overlap < v * widths) return;
+    // A hold that comes as the first step starts waits for the second, then brakes: within
+    // hold_time_bound() if Tk + 2.5 (V alpha + T2) is (both steps' kernels and a stop from V, the
+    // widest at V_max). Slower, the overlap shrinks to V Tk_max.
+    const double tk_max = hold_bound_ - 2.5 * widths - 2.0 * parameters_.period;
+    if (!(tk_max >= rules_.spacing(rise.shape(), fall.shape()))) return;  // (below overlap / V_max: a shorter Tk at V_max)
     s.overlap = overlap;
+    s.overlap_tk = tk_max;
     if (s.corner_cap > v) s.corner_cap = v, s.cap_bound = CornerBound::tolerance;
 }
 
@@ -555,7 +562,7 @@ void Lookahead::link(std::size_t i) {
 
 Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(lookahead), i_(i) {
     const Segment& s = la_.seg(i);
-    in_.length = la_.seg_length(i);
+    in_.length = la_.legs_length(i, 0.0, 0.0);  // (input() takes the overlaps off at the speeds)
     in_.alpha = s.alpha;
     if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, la_.in_ramp_regime(i));
     if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, la_.out_ramp_regime(i));
@@ -584,6 +591,7 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
 }
 
 const ProfileInput& Lookahead::Fitting::input(double a, double b) {
+    in_.length = la_.legs_length(i_, a, b);
     if (entry_scaled_) in_.in.box = a * in_scale_;
     else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
     if (out_sized_) la_.resize_sized(i_, b, in_.out);  // (its direction and unit box stay)
@@ -603,7 +611,10 @@ Lookahead::MemoKey Lookahead::Fitting::key() const {
         for (int k = 0; k < axes; ++k) put(v[k]);
     };
     put(la_.rules_.t2);
-    put(in_.length), put(in_.alpha), put(in_.u_unit_box), put_vector(in_.u);
+    put(la_.legs_length(i_, 0.0, 0.0)), put(in_.alpha), put(in_.u_unit_box), put_vector(in_.u);
+    const bool in_overlap = i_ > 0 && la_.overlapped(i_ - 1), out_overlap = la_.overlapped(i_);  // (legs_length's)
+    put(in_overlap ? la_.seg(i_ - 1).overlap : 0.0), put(in_overlap ? la_.seg(i_ - 1).overlap_tk : 0.0);
+    put(out_overlap ? la_.seg(i_).overlap : 0.0), put(out_overlap ? la_.seg(i_).overlap_tk : 0.0);
     put(in_.in_t2), put(in_.in_alpha), put(in_.out_t2), put(in_.out_alpha);
     put(in_.entry_elapsed);
     put((entry_fixed_ ? 1 : 0) + (entry_scaled_ ? 2 : 0) + (corner_in_ ? 4 : 0) + (corner_out_ ? 8 : 0) + (out_sized_ ? 16 : 0));

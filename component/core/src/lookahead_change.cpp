@@ -86,9 +86,9 @@ void Lookahead::place_hold_stop() {
         in.out_alpha = 0.0, in.out_t2 = -1.0;  // a split's stop shares no corner's regime (set_junction)
         in.length = 0.0;
         const double reach = a * profile_legs(rules_, in, a, a, a).x0;
-        const double start = i == 0 ? frozen_.consumed : seg(i - 1).overlap_length();  // where its legs begin
+        const double start = i == 0 ? frozen_.consumed : seg(i - 1).overlap_at(a);  // where its legs begin
         // Also where the block ends in a stop: that stop may lie far beyond the earliest one.
-        if (reach < seg_length(i) * (1.0 - 1e-9) && depth() < segments_.size()) {
+        if (reach < legs_length(i, a, s.b) * (1.0 - 1e-9) && depth() < segments_.size()) {
             Segment rest = s;  // the rest of the block, from the stop on, with the junction after it
             const double at = start + reach;
             const AxisVector point = s.start + s.u * at;

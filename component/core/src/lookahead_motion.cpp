@@ -107,9 +107,9 @@ void Lookahead::refresh_current_leg() {
     leg.tv = n.centre - centre;
     const double length = frozen_.speed * leg.tv;
     leg.delta = s.u * length;
-    const bool overlap = n.kind == StepKind::junction && overlapped(0);  // the leg across the corner ends the block
+    const bool overlap = n.kind == StepKind::junction && split(0);  // the leg across the corner ends the block
     leg.end = n.kind == StepKind::ramp ? AxisVector(s.start + s.u * (frozen_.consumed + length))
-                                       : AxisVector(s.end - s.u * (overlap ? s.overlap : 0.0));
+                                       : AxisVector(s.end - s.u * (overlap ? s.overlap_at(s.b) : 0.0));
     leg.last_of_block = n.kind != StepKind::ramp && !s.hold_split && !overlap;  // a hold's split is not the block's end
     leg.fall = (n.centre - 0.5 * n.step.kernel.width()) - (centre - 0.5 * frozen_.step.kernel.width());
     leg.falling = n.step.kernel;
@@ -183,7 +183,7 @@ void Lookahead::freeze(const NextStep& n) {
             break;
         }
         case StepKind::junction:
-            if (overlapped(0)) return freeze_overlap(n, tick, offset);
+            if (split(0)) return freeze_overlap(n, tick, offset);
             pop_front(false);
             frozen_.consumed = 0.0;
             break;
@@ -207,7 +207,7 @@ void Lookahead::freeze(const NextStep& n) {
 void Lookahead::freeze_overlap(const NextStep& n, std::int64_t tick, double offset) {
     const Segment& s = seg(0);
     const Step fall = overlap_fall(0);
-    const double tk = s.overlap_time(), overlap = s.overlap;
+    const double overlap = s.overlap_at(s.b), tk = overlap / s.b;
     const AxisVector next_u = seg(1).u;
     Leg leg;
     leg.rising = n.step.kernel;
@@ -371,12 +371,12 @@ void Lookahead::build_legs(std::size_t first) {
         const bool stop = i + 1 == count_ || s.kind == Kind::stop;
         leg_to(stop ? stop_step(i) : junction_step(i), t + s.x0 + s.xp + s.x1);
         when_[i] = centre;
-        if (!stop && overlapped(i)) {  // the leg across the corner, then the pulse falls
+        if (!stop && split(i)) {  // the leg across the corner, then the pulse falls
             const Step fall = overlap_fall(i);
             const double tk = s.overlap_time();
             TimedLeg tl;
             tl.tv = tk;
-            tl.delta = (s.u + seg(i + 1).u) * s.overlap;
+            tl.delta = (s.u + seg(i + 1).u) * s.overlap_at(s.b);
             tl.rise = centre - 0.5 * step.kernel.width();
             tl.fall = (centre + tk - 0.5 * fall.kernel.width()) - tl.rise;
             tl.rising = step.kernel;
@@ -579,7 +579,7 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             if (!sharp && when_[i] - 32.0 * period >= begin)
                 bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - check_margin)};
             // (Overlapped, the leg across the corner ends `overlap` along the next block.)
-            const AxisVector offset = overlapped(i) ? AxisVector(-s.overlap * seg(i + 1).u) : AxisVector(AxisVector::Zero());
+            const AxisVector offset = split(i) ? AxisVector(-s.overlap_at(s.b) * seg(i + 1).u) : AxisVector(AxisVector::Zero());
             const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds, offset);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];

@@ -146,11 +146,13 @@ private:
         Turn turn;
         double turn_box = -1.0;    // rules_.unit_box(turn.direction)
         // The paper's overlap (Sec. 3) at a corner turning by 120 degrees or more, |u + u'| <= 1: the
-        // next block's pulse rises Tk = overlap / V before this one's falls, so the junction is two
-        // steps with a leg at V (u + u') between them, never faster than V, and the corner takes
-        // Tk less. `overlap` is the length each block gives up to that leg (0: one step); the
-        // corner error is then s overlap at any V up to the blocks' feeds (set_overlap).
+        // next block's pulse rises Tk before this one's falls, so the junction is two steps with a
+        // leg at V (u + u') between them, never faster than V, and the corner takes Tk less. Each
+        // block gives up min(overlap, V overlap_tk) to that leg, Tk = that / V: at most overlap (the
+        // tolerance's, set_overlap), and at most overlap_tk long (a hold must wait for the second
+        // step once the first has started). 0: one step.
         double overlap = 0.0;
+        double overlap_tk = 0.0;
         bool no_overlap = false;   // the check refused it here: one step
         Kind kind = Kind::stop;
         Regime junction;           // the junction step's smoothing
@@ -178,9 +180,11 @@ private:
         double enter = 0.0;        // forward pass: its entry step's centre, s (timeline clock)
         double width = 0.0;        // the widest kernel of its legs when build_legs last made them
 
-        double overlap_length() const { return kind == Kind::corner ? overlap : 0.0; }
-        // Tk: the leg across the corner, between its two steps (0: one step).
-        double overlap_time() const { return kind == Kind::corner && overlap > 0.0 && b > 0.0 ? overlap / b : 0.0; }
+        // The length each block gives up at corner speed v, and the longest it may.
+        double overlap_at(double v) const { return kind == Kind::corner && v > 0.0 ? std::min(overlap, v * overlap_tk) : 0.0; }
+        double overlap_most() const { return kind == Kind::corner ? overlap : 0.0; }
+        // Tk as planned: the leg across the corner, between its two steps (0: one step).
+        double overlap_time() const { return b > 0.0 ? overlap_at(b) / b : 0.0; }
     };
 
     // A step of the plan: velocity change, the box of its first stage, its kernel.
@@ -223,10 +227,16 @@ private:
     }
     Segment& seg(std::size_t i) { return segments_[ring(i)]; }
     const Segment& seg(std::size_t i) const { return segments_[ring(i)]; }
-    // The length its legs cover: less what the motion used and the overlaps at its ends.
+    // What is left of it for its legs: less what the motion used; less the overlaps at its ends,
+    // the longest they may be (for the estimates; legs_length() at the speeds).
     double seg_length(std::size_t i) const {
-        const double rest = i == 0 ? seg(0).length - frozen_.consumed : seg(i).length - seg(i - 1).overlap_length();
-        return i + 1 < count_ ? rest - seg(i).overlap_length() : rest;
+        const double rest = i == 0 ? seg(0).length - frozen_.consumed : seg(i).length - seg(i - 1).overlap_most();
+        return i + 1 < count_ ? rest - seg(i).overlap_most() : rest;
+    }
+    // The length its legs cover entered at a and left at b (the overlaps at those corner speeds).
+    double legs_length(std::size_t i, double a, double b) const {
+        const double rest = i == 0 ? seg(0).length - frozen_.consumed : seg(i).length - seg(i - 1).overlap_at(a);
+        return i + 1 < count_ ? rest - seg(i).overlap_at(b) : rest;
     }
     double target(std::size_t i) const { return std::min(seg(i).feed * rate_, seg(i).feed_max); }
     bool entry_is_stop(std::size_t i) const { return i == 0 ? !frozen_.moving : seg(i - 1).kind == Kind::stop; }
@@ -275,7 +285,9 @@ private:
     Step sized_step(std::size_t i, double dv) const;  // dv along u
     Step junction_step(std::size_t i) const;         // after segment i, at the plan's speeds (not a stop); overlapped: the first
     Step overlap_fall(std::size_t i) const;          // an overlapped junction's second step: segment i's pulse falls
-    bool overlapped(std::size_t i) const { return i + 1 < count_ && seg(i).overlap_length() > 0.0; }
+    bool overlapped(std::size_t i) const { return i + 1 < count_ && seg(i).overlap_most() > 0.0; }
+    // ... and planned so: two steps and a leg between them (a corner at speed 0 is one step).
+    bool split(std::size_t i) const { return overlapped(i) && seg(i).b > 0.0; }
     Step stop_step(std::size_t i) const;             // segment i's stop at its end
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
@@ -509,6 +521,7 @@ private:
     std::size_t take_ramp_change() { return std::exchange(ramp_change_, static_cast<std::size_t>(-1)); }
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
+    double hold_bound_ = 0.0;            // hold_time_bound(): a hold comes to rest within it
     double rate_ = 1.0;
     double max_rate_ = 1.0;
     bool held_ = false;
