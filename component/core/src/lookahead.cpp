@@ -425,7 +425,8 @@ void Lookahead::set_overlap(std::size_t i) {
         const double half = 0.5 * overlap / v;
         return v * (n.u * (half + rise.kernel.lead_at(half)) - s.u * (half + fall.kernel.lead_at(half))).norm();
     };
-    double lo = v * rules_.spacing(rise.shape(), fall.shape()), hi = epsilon / s.turn.s;  // error >= s overlap
+    const double gap = rules_.spacing(rise.shape(), fall.shape());  // Tk at least
+    double lo = v * gap, hi = epsilon / s.turn.s;  // error >= s overlap
     if (!(lo > 0.0) || !(hi >= lo) || error(lo) > epsilon) return;
     if (error(hi) > epsilon)  // the kernels still move at the middle: bisect (the error has no closed inverse there)
         for (int k = 0; k < 48 && hi - lo > 1e-12 * hi; ++k) (error(0.5 * (lo + hi)) <= epsilon ? lo : hi) = 0.5 * (lo + hi);
@@ -433,14 +434,13 @@ void Lookahead::set_overlap(std::size_t i) {
         lo = hi;
     const double overlap = lo;
     const double widths = std::max(rise.kernel.width(), fall.kernel.width());
-    const double own = i == 0 ? s.length - frozen_.consumed : s.length;
-    for (double length : {own, n.length})
+    for (double length : {legs_length(i, 0.0, 0.0), n.length})
         if (overlap > length / 3.0 || length - 2.0 * overlap < v * widths) return;
     // A hold that comes as the first step starts waits for the second, then brakes: within
     // hold_time_bound() if Tk + 2.5 (V alpha + T2) is (both steps' kernels and a stop from V, the
     // widest at V_max). Slower, the overlap shrinks to V Tk_max.
     const double tk_max = hold_bound_ - 2.5 * widths - 2.0 * parameters_.period;
-    if (!(tk_max >= rules_.spacing(rise.shape(), fall.shape()))) return;  // (below overlap / V_max: a shorter Tk at V_max)
+    if (!(tk_max >= gap)) return;  // (below overlap / V_max: a shorter Tk at V_max)
     s.overlap = overlap;
     s.overlap_tk = tk_max;
     if (s.corner_cap > v) s.corner_cap = v, s.cap_bound = CornerBound::tolerance;

@@ -207,8 +207,7 @@ void Lookahead::freeze(const NextStep& n) {
 void Lookahead::freeze_overlap(const NextStep& n, std::int64_t tick, double offset) {
     const Segment& s = seg(0);
     const Step fall = overlap_fall(0);
-    const double overlap = s.overlap_at(s.b), tk = overlap / s.b;
-    const AxisVector next_u = seg(1).u;
+    const double overlap = s.overlap_at(s.b), tk = s.overlap_time();
     Leg leg;
     leg.rising = n.step.kernel;
     leg.falling = fall.kernel;
@@ -217,8 +216,8 @@ void Lookahead::freeze_overlap(const NextStep& n, std::int64_t tick, double offs
     normalise(leg.rise_tick, leg.rise_offset, parameters_.period);
     leg.tv = tk;
     leg.fall = tk + 0.5 * (n.step.kernel.width() - fall.kernel.width());
-    leg.delta = (s.u + next_u) * overlap;
-    leg.end = s.end + next_u * overlap;
+    leg.delta = overlap_delta(0);
+    leg.end = s.end + seg(1).u * overlap;
     leg.line = s.line;
     leg.type = s.type;
     leg.last_of_block = true;
@@ -376,7 +375,7 @@ void Lookahead::build_legs(std::size_t first) {
             const double tk = s.overlap_time();
             TimedLeg tl;
             tl.tv = tk;
-            tl.delta = (s.u + seg(i + 1).u) * s.overlap_at(s.b);
+            tl.delta = overlap_delta(i);
             tl.rise = centre - 0.5 * step.kernel.width();
             tl.fall = (centre + tk - 0.5 * fall.kernel.width()) - tl.rise;
             tl.rising = step.kernel;

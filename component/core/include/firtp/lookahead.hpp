@@ -288,6 +288,8 @@ private:
     bool overlapped(std::size_t i) const { return i + 1 < count_ && seg(i).overlap_most() > 0.0; }
     // ... and planned so: two steps and a leg between them (a corner at speed 0 is one step).
     bool split(std::size_t i) const { return overlapped(i) && seg(i).b > 0.0; }
+    // That leg's displacement as planned (it lasts seg(i).overlap_time()).
+    AxisVector overlap_delta(std::size_t i) const { return (seg(i).u + seg(i + 1).u) * seg(i).overlap_at(seg(i).b); }
     Step stop_step(std::size_t i) const;             // segment i's stop at its end
     Step entry_step(std::size_t i) const;            // the step that starts segment i (after the frozen one: it)
     StepShape entry_shape(std::size_t i, double a) const;
