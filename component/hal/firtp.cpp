@@ -1,7 +1,7 @@
 // firtp: FIR-filter corner smoothing as a LinuxCNC-style HAL component.
 //
 //   loadrt firtp [axes=3] [stages=2] [t1=S t2=S t3=S t4=S] [tolerance=MM] [meaning=corner|contour]
-//                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=0] [block_key=K]
+//                [period_ns=1000000] [queue=1024] [max_blocks=32] [plan_budget_us=250] [block_key=K]
 //                [state_key=K] [max_velocity=V,V,..] [max_acceleration=A,..] [max_jerk=J,..]
 //                [stream_depth=4096] [max_feed_override=1] [rate_reserve=0.2] [brake_speed=1]
 //   addf firtp.update servo-thread
@@ -69,8 +69,8 @@ static char* max_acceleration = nullptr;
 RTAPI_MP_STRING(max_acceleration, "per-axis acceleration limits, units/s^2, comma separated");
 static char* max_jerk = nullptr;
 RTAPI_MP_STRING(max_jerk, "per-axis jerk limits, units/s^3, comma separated");
-static int plan_budget_us = 0;
-RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (0: up to max_blocks)");
+static int plan_budget_us = firtp::defaults::plan_budget_us;
+RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (" FIRTP_DEFAULT_PLAN_BUDGET_US_TEXT "; 0: up to max_blocks)");
 static int queue = firtp::defaults::queue;
 RTAPI_MP_INT(queue, "blocks the planner holds at once");
 static int max_blocks = firtp::defaults::max_blocks;

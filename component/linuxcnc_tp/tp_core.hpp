@@ -63,7 +63,7 @@ struct TpSettings {
     std::size_t full_margin = 16;      // full() this many moves before the ring is
     std::size_t blocks = defaults::tp_blocks;  // planned blocks not yet retired (the Planner), at most
     int max_blocks_per_cycle = defaults::tp_max_blocks;  // planned per period at most
-    std::int64_t plan_budget_ns = defaults::tp_plan_budget_us * 1000;  // and only while planning took less than this (0: no time limit)
+    std::int64_t plan_budget_ns = defaults::plan_budget_us * 1000;  // and only while planning took less than this (0: no time limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (rtapi_get_time)
     double max_chords = 1.0e6;         // an arc needing more is refused
     // [TASK]CYCLE_TIME, s (0: unknown). While a program streams, LinuxCNC hands moves at most a task

@@ -81,8 +81,8 @@ static int blocks = firtp::defaults::tp_blocks;
 RTAPI_MP_INT(blocks, "planned blocks (arc chords count one each) not yet finished, at most (" FIRTP_TP_DEFAULT_BLOCKS_TEXT ")");
 static int max_blocks = firtp::defaults::tp_max_blocks;
 RTAPI_MP_INT(max_blocks, "blocks planned per period at most (" FIRTP_TP_DEFAULT_MAX_BLOCKS_TEXT ")");
-static int plan_budget_us = firtp::defaults::tp_plan_budget_us;
-RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (" FIRTP_TP_DEFAULT_PLAN_BUDGET_US_TEXT "; 0: max_blocks only)");
+static int plan_budget_us = firtp::defaults::plan_budget_us;
+RTAPI_MP_INT(plan_budget_us, "planning time per period after the first block, us (" FIRTP_DEFAULT_PLAN_BUDGET_US_TEXT "; 0: max_blocks only)");
 static int arena_mb = 64;
 RTAPI_MP_INT(arena_mb, "memory reserved at load for the planner, MB (64: 4096 blocks take about 52)");
 

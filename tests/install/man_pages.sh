@@ -51,14 +51,16 @@ require() {
   grep -qF -- "$2" "$1" || { echo "FAIL: $(basename "$1") does not state $3 as firtp/defaults.hpp does: $2"; fail=1; }
 }
 tolerance=$(default_text TOLERANCE) reserve=$(default_text RATE_RESERVE)
-chord=$(default_text ARC_CHORD_TOLERANCE) override=$(default_text MAX_FEED_OVERRIDE)
-for v in "$tolerance" "$reserve" "$chord" "$override" "$period_ns"; do
+chord=$(default_text ARC_CHORD_TOLERANCE) override=$(default_text MAX_FEED_OVERRIDE) budget=$(default_text PLAN_BUDGET_US)
+for v in "$tolerance" "$reserve" "$chord" "$override" "$period_ns" "$budget"; do
   [ -n "$v" ] || { echo "FAIL: a default missing from $defaults_h"; fail=1; }
 done
 require "$src/docs/man/firtp.9" "\fBtolerance\fR (machine units, $tolerance)" "tolerance"
 require "$src/docs/man/firtp.9" "\fBmax_feed_override\fR ($override)" "max_feed_override"
 require "$src/docs/man/firtp.9" "\fBrate_reserve\fR ($reserve)" "rate_reserve"
 require "$src/docs/man/firtp.9" "\fBperiod_ns\fR ($period_ns)" "period_ns"
+require "$src/docs/man/firtp.9" "\fBplan_budget_us\fR ($budget)" "plan_budget_us"
+require "$src/docs/man/firtp_tp.9" "\fBplan_budget_us\fR ($budget)" "plan_budget_us"
 require "$src/docs/man/firtp_tp.9" "\fBtolerance\fR ($tolerance)" "tolerance"
 require "$src/docs/man/firtp_tp.9" "\fBchord_tol\fR ($chord)" "chord_tol"
 require "$src/docs/man/firtp_tp.9" "\fBrate_reserve\fR ($reserve)" "rate_reserve"

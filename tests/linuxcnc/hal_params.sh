@@ -44,7 +44,7 @@ given=(firtp.axes 2  firtp.fixed-chain TRUE  firtp.stages 3  firtp.t1 0.1  firtp
 for ((i = 0; i < ${#given[@]}; i += 2)); do check "$work/given.txt" "${given[i]}" "${given[i + 1]}"; done
 [ "$(wc -l < "$work/given.txt")" -eq 25 ] || { echo "FAIL: expected 25 params for 2 axes"; cat "$work/given.txt"; exit 1; }
 defaults=(firtp.axes 3  firtp.fixed-chain FALSE  firtp.stages 0  firtp.t1 0  firtp.tolerance 0.05  firtp.contour FALSE
-  firtp.period-ns 1000000  firtp.queue 1024  firtp.max-blocks 32  firtp.plan-budget-us 0
+  firtp.period-ns 1000000  firtp.queue 1024  firtp.max-blocks 32  firtp.plan-budget-us 250
   firtp.block-key 1179210306  firtp.state-key 1179210323  firtp.stream-depth 4096  firtp.max-feed-override 1
   firtp.rate-reserve 0.2  firtp.brake-speed 1  firtp.axis.2.max-acceleration 5000  firtp.axis.2.max-jerk 0
   firtp.axis.2.max-velocity 0)

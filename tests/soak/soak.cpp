@@ -3,7 +3,7 @@
 // stream faults (tests/realtime/random_operation.hpp), alternating two machines (built-in with
 // axis limits; the paper's filters without limits) every `--segment` ticks.
 //
-//   build/bin/firtp_soak [--ticks 1e8] [--seed S] [--segment 1e7] [--report 1e7]
+//   build/bin/firtp_soak [--ticks 1e8] [--seed S] [--segment 1e7] [--report 1e7] [--budget-us 250]
 //
 // Checked all along: finite output, |v| and |a| within the axis limits at every sample, every
 // completed program ends on its last target within 1e-9 mm with every block accepted once
@@ -12,6 +12,11 @@
 // grow by more than 1 MiB. Exit 0 when everything held, 1 otherwise. Each report also gives the
 // slowest update since the one before and how many took over 1 ms (wall clock): planning-time
 // regressions show there (docs/HARDENING.md, Soak).
+//
+// As firtp.so runs, a period plans one block, then more while --budget-us lasts (the module's
+// default, on the wall clock): how many blocks a period takes then depends on this machine's
+// speed, and so do the figures. --budget-us 0 plans up to max_blocks a period whatever they cost:
+// the same run for a seed on any machine (to reproduce a failure).
 #include "bench_stats.hpp"
 #include "random_operation.hpp"
 
@@ -41,7 +46,10 @@ struct Machine {
     test::StreamRing ring;
     std::unique_ptr<test::RandomOperation> op;
     ComponentOutputs out;
-    Machine(bool limits, std::uint64_t seed) : settings(test::operation_settings(limits)) {
+    Machine(bool limits, std::uint64_t seed, std::int64_t budget_ns) : settings(test::operation_settings(limits)) {
+        settings.plan_budget_ns = budget_ns;
+        settings.clock_ns = bench::wall_ns;
+        if (getenv("BUDGET")) { settings.plan_budget_ns = atoll(getenv("BUDGET")); settings.clock_ns = +[]() -> std::int64_t { return bench::wall_ns(); }; }
         core = std::make_unique<ComponentLogic>(settings);
         op = std::make_unique<test::RandomOperation>(settings, seed);
     }
@@ -86,6 +94,7 @@ void add(test::OperationStats& total, const test::OperationStats& s) {
 int main(int argc, char** argv) {
     double ticks = 1e8, segment = 1e7, report = 1e7;
     std::uint64_t seed = 1;
+    double budget_us = defaults::plan_budget_us;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&] { return i + 1 < argc ? std::stod(argv[++i]) : 0.0; };
@@ -93,16 +102,21 @@ int main(int argc, char** argv) {
         else if (a == "--segment") segment = value();
         else if (a == "--report") report = value();
         else if (a == "--seed") seed = static_cast<std::uint64_t>(value());
+        else if (a == "--budget-us") budget_us = value();
         else {
-            std::fprintf(stderr, "usage: firtp_soak [--ticks 1e8] [--seed S] [--segment 1e7] [--report 1e7]\n");
+            std::fprintf(stderr, "usage: firtp_soak [--ticks 1e8] [--seed S] [--segment 1e7] [--report 1e7] [--budget-us %d]\n",
+                         defaults::plan_budget_us);
             return a == "--help" ? 0 : 2;
         }
     }
     segment = std::max(1.0, std::min(segment, report));
-    Machine machines[2] = {Machine(true, seed * 2 + 1), Machine(false, seed * 2 + 2)};
+    const auto budget_ns = static_cast<std::int64_t>(budget_us * 1e3);
+    Machine machines[2] = {Machine(true, seed * 2 + 1, budget_ns), Machine(false, seed * 2 + 2, budget_ns)};
     const auto begin = std::chrono::steady_clock::now();
-    std::printf("firtp_soak: %.3g ticks (%.1f h of motion at 1 kHz), seed %llu, machines alternate every %.3g ticks\n",
-                ticks, ticks / 3.6e6, static_cast<unsigned long long>(seed), segment);
+    std::printf("firtp_soak: %.3g ticks (%.1f h of motion at 1 kHz), seed %llu, machines alternate every %.3g ticks, "
+                "planning budget %.0f us%s\n",
+                ticks, ticks / 3.6e6, static_cast<unsigned long long>(seed), segment, budget_us,
+                budget_ns > 0 ? " (wall clock: runs differ)" : " (none: reproducible)");
     std::printf("%12s %9s %9s %8s %7s %7s %7s %7s %10s %10s %9s %9s %9s %6s\n", "ticks", "blocks", "completed", "aborted",
                 "disabl", "braked", "faults", "repeats", "end err mm", "|v|,|a|/lim", "RSS KiB", "ticks/s", "worst us",
                 ">1 ms");

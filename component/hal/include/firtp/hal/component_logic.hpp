@@ -38,7 +38,7 @@ struct ComponentSettings {
     PlannerParameters planner;           // planner.queue_capacity: blocks it holds at once
     int axes = 3;
     int max_blocks_per_period = defaults::max_blocks;  // stream records planned per period at most
-    std::int64_t plan_budget_ns = 0;     // and only while planning took less than this (0: no limit)
+    std::int64_t plan_budget_ns = defaults::plan_budget_us * 1000;  // and only while planning took less than this (0: no limit)
     std::int64_t (*clock_ns)() = nullptr;  // monotonic clock for the budget (the RTAPI clock in HAL)
     double default_tolerance = defaults::tolerance;  // for pin blocks whose tolerance is 0
     double brake_speed = defaults::brake_speed;  // feedback speed (units/s, any axis) that counts as moving at a start
