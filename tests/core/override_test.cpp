@@ -167,12 +167,14 @@ TEST(RateLimits, OverrideHoldAndAbortAtRandomMomentsKeepLimitsToleranceAndEnd) {
         }
         // The path does not depend on the rate: corner errors as at 100 %. After a rate change the
         // samples fall between the planned ones, and a chord between two samples lies within its
-        // sagitta |a| dt^2 / 8 of the continuous path (below 1 um here).
+        // sagitta |a| dt^2 / 8 of the continuous path (at most 2.2 um here). So the two runs'
+        // errors differ by the path's 1 % or that sagitta (scale 8, seed 6, program 841: a 0.013 mm
+        // tolerance, 0.14 um apart).
         const double sagitta = std::sqrt(3.0) * p.limits.axis[0].max_acceleration * p.period * p.period / 8;
         ASSERT_EQ(m.corner_errors.size(), m0.corner_errors.size());
         for (std::size_t c = 0; c < m.corner_errors.size(); ++c) {
             ASSERT_LE(m.corner_errors[c], blocks[c].tolerance + sagitta);
-            ASSERT_NEAR(m.corner_errors[c], m0.corner_errors[c], 0.01 * blocks[c].tolerance + 1e-6);
+            ASSERT_NEAR(m.corner_errors[c], m0.corner_errors[c], std::max(0.01 * blocks[c].tolerance, sagitta) + 1e-6);
         }
         ASSERT_EQ(m.end_position, blocks.back().target);
         if (r.longest_stop > 0.0) {
