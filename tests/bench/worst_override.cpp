@@ -12,6 +12,7 @@
 // (the blocks that refill the queue come between periods) likewise. At the end the
 // queue drains and the output must rest exactly on the last command; exit status 1 otherwise.
 #include "bench_stats.hpp"
+#include "chord_moves.hpp"
 #include "random_moves.hpp"
 
 #include <firtp/planner.hpp>
@@ -27,27 +28,6 @@ using namespace firtp;
 using namespace firtp::bench;
 
 namespace {
-
-// examples/polygon360.ngc's chords, without end.
-class Chords {
-public:
-    Block next() {
-        ++count_;
-        const double angle = 2.0 * M_PI * static_cast<double>(count_) / 360.0;
-        Block b;
-        b.target = AxisVector::Zero();
-        b.target[0] = 20.0 * std::cos(angle) - 20.0;
-        b.target[1] = 20.0 * std::sin(angle);
-        b.feed = 300.0;
-        b.tolerance = 0.5;
-        b.line = count_;
-        return b;
-    }
-    std::int64_t count() const { return count_; }
-
-private:
-    std::int64_t count_ = 0;
-};
 
 struct Periods {
     Histogram cpu{1000, 20'000'000};

@@ -802,12 +802,12 @@ std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
         s.exit_max = exit_max;
         s.entry_max = entry_max;
         if (!refresh_end_flags(i) && same) break;
-        changed = i;
+        if (!same) changed = i;
         if (same && i <= settled) {
             // Only the end-limited flags changed, and the bounds before were found from what they
             // are now: they stand, the flags go on down alone (searching every bound again took
             // 0.5 ms an add at a quadrant of examples/polygon360.ngc, a queue of 256 blocks).
-            changed = refresh_end_flags_below(i);
+            refresh_end_flags_below(i);
             break;
         }
     }
@@ -1056,10 +1056,10 @@ void Lookahead::restore(const PlanScalars& p) {
 }
 
 std::size_t Lookahead::bounds_from_end(std::size_t settled) {
-    std::size_t changed = backward(count_ - 1, settled);
+    const std::size_t changed = backward(count_ - 1, settled);
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
     // (the pass above may have stopped before it; the bounds are the same).
-    if (count_ >= 3) changed = std::min(changed, refresh_end_flags_below(count_ - 2));
+    if (count_ >= 3) refresh_end_flags_below(count_ - 2);
     return changed;
 }
 
