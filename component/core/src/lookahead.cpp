@@ -99,6 +99,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
 void Lookahead::reset(const AxisVector& position) {
     ramp_change_ = static_cast<std::size_t>(-1);
     batch_.open = false;
+    join_ = Join{};
     head_ = 0;
     count_ = 0;
     goal_ = position;
@@ -1007,7 +1008,8 @@ Result Lookahead::add(const Block& block, Planning when) {
     arrive(s);
     goal_ = block.target;
     finished_ = false;
-    if (deferred_ > 0 || (when == Planning::now && waits_beyond())) {  // beyond the window's reach: it waits
+    // Beyond the window's reach it waits; so does a block after a join planned in this period (one a period).
+    if (deferred_ > 0 || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()))) {
         seg(count_ + deferred_) = s;
         ++deferred_;
         return Result::ok;

@@ -36,6 +36,11 @@ constexpr std::size_t horizon_growth = 8;
 // A batch that no plan passes is undone from a copy of the window: beyond this many blocks, one
 // joins at a time (the copy would cost more than the plans it saves).
 constexpr std::size_t batch_window_most = 512;
+// A batch's plan waits for the next period where the blocks before what it changes are this many
+// (the next step's, and the one after it, may freeze then); a batch waits at most this many commits
+// for a period in which nothing freezes (then it is planned whole, as it is where little is under way).
+constexpr std::size_t split_from = 4;
+constexpr std::uint32_t join_waits_most = 8;
 
 }  // namespace
 
@@ -95,7 +100,7 @@ void Lookahead::take_waiting() {
 }
 
 void Lookahead::rejoin_some() {
-    if (deferred_ == 0) return;
+    if (deferred_ == 0 || join_.open || join_.done == timeline_->now()) return;
     if (++rejoin_clock_ % horizon_every == 0 || count_ == 0) {
         const std::size_t h = horizon();
         keep_ = h < count_ ? h : count_ + horizon_growth;
@@ -106,15 +111,30 @@ void Lookahead::rejoin_some() {
     // expect.)
     const bool batch = !held_ && !retry_ && before <= batch_window_most;
     const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
+    // A batch's plan comes in the next period if nothing freezes in this one; it waits a few
+    // commits for such a period.
+    const bool split = n > 1 && frozen_.moving && !next_due();
+    if (n > 1 && frozen_.moving && !split && ++join_.waited <= join_waits_most) return;
+    join_.waited = 0;
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
         undo_ = plan_scalars();
     }
     for (std::size_t k = 0; k < n; ++k) take_waiting(), link_newest();
-    // One plan for them all, as plan_batch.
-    std::size_t changed = 0;
-    const bool planned = plan_joined(before, n > 1, &changed);
-    tail_ = before > changed ? before - changed : 1;
+    // The bounds now, one plan for them all (as plan_batch) now or at the next commit: where what
+    // changed lies past the steps the next period may freeze.
+    join_.open = true;
+    join_.before = before, join_.n = n;
+    join_.lowest = bounds_from_end(before >= 2 ? before - 2 : 0);
+    if (!split || join_.lowest < split_from) plan_join();
+}
+
+void Lookahead::plan_join() {
+    join_.open = false;
+    join_.done = timeline_->now();
+    const std::size_t before = join_.before, n = join_.n, lowest = join_.lowest;
+    const bool planned = replan(std::min(lowest, before > 0 ? before - 1 : 0), n > 1);
+    tail_ = before > lowest ? before - lowest : 1;
     if (planned) return;
     // No plan short of the last resort, which is one block's: the window as they found it, and the
     // first of them alone.

@@ -62,7 +62,10 @@ public:
     // Planning::at_update: the speeds and their check wait for the next commit or rate change.
     Result add(const Block& block, Planning when = Planning::now);
     // No more blocks follow for now: the stop at the end is the end of the program.
-    void finish() { finished_ = true; }
+    void finish() {
+        finish_join();
+        finished_ = true;
+    }
     // Freeze every step whose kernel starts by the timeline's current tick: its leg goes to the
     // timeline. Before tick().
     void commit();
@@ -437,8 +440,9 @@ private:
     // The backward pass from the newest block, junctions up to `settled` settled before: the
     // lowest segment whose bounds changed (the end flags follow as far as they change).
     std::size_t bounds_from_end(std::size_t settled);
-    // What add(at_update) left, before anything reads the plan (each commit asks: inline).
+    // What add(at_update) or a join left, before anything reads the plan (each commit asks: inline).
     void plan_added() {
+        finish_join();
         if (batch_.open) plan_batch();
     }
     void plan_batch();
@@ -481,6 +485,18 @@ private:
     void defer_beyond(std::size_t keep);  // a change of rate: the blocks after `keep` wait
     void take_waiting();          // the first waiting block, as it came, at ring slot count_
     void rejoin_some();           // at each commit
+    // A join in two periods (lookahead_reach.cpp): the blocks linked and their bounds in one, the
+    // plan and its check at the start of the next, where nothing froze in between (indices hold).
+    struct Join {
+        bool open = false;
+        std::size_t before = 0, lowest = 0, n = 0;
+        std::int64_t done = -1;    // tick of the last join's plan: one a period
+        std::uint32_t waited = 0;  // commits a join waited for one in which nothing freezes
+    } join_;
+    void finish_join() {
+        if (join_.open) plan_join();
+    }
+    void plan_join();
     // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
     void join(Planning when);
     void link_newest();  // join's first half: counted and linked to the block before, not planned
