@@ -49,7 +49,6 @@ struct Machine {
     Machine(bool limits, std::uint64_t seed, std::int64_t budget_ns) : settings(test::operation_settings(limits)) {
         settings.plan_budget_ns = budget_ns;
         settings.clock_ns = bench::wall_ns;
-        if (getenv("BUDGET")) { settings.plan_budget_ns = atoll(getenv("BUDGET")); settings.clock_ns = +[]() -> std::int64_t { return bench::wall_ns(); }; }
         core = std::make_unique<ComponentLogic>(settings);
         op = std::make_unique<test::RandomOperation>(settings, seed);
     }
