@@ -1043,11 +1043,9 @@ void Lookahead::link_newest() {
     else classify(0);
 }
 
-bool Lookahead::plan_joined(std::size_t before, bool undoable, std::size_t* changed) {
+bool Lookahead::replan_joined(std::size_t before, std::size_t lowest, bool undoable) {
     // (link() changed junction before - 2 on.) The block before them is planned again whatever its
     // bounds: its exit was the end of the path's stop and is a corner now.
-    const std::size_t lowest = bounds_from_end(before >= 2 ? before - 2 : 0);
-    if (changed != nullptr) *changed = lowest;
     return replan(std::min(lowest, before > 0 ? before - 1 : 0), undoable);
 }
 

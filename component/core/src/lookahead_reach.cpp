@@ -113,8 +113,8 @@ void Lookahead::rejoin_some() {
     const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
     // A batch's plan comes in the next period if nothing freezes in this one; it waits a few
     // commits for such a period.
-    const bool split = n > 1 && frozen_.moving && !next_due();
-    if (n > 1 && frozen_.moving && !split && ++join_.waited <= join_waits_most) return;
+    const bool under_way = n > 1 && frozen_.moving, split = under_way && !next_due();
+    if (under_way && !split && ++join_.waited <= join_waits_most) return;
     join_.waited = 0;
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
@@ -124,16 +124,16 @@ void Lookahead::rejoin_some() {
     // The bounds now, one plan for them all (as plan_batch) now or at the next commit: where what
     // changed lies past the steps the next period may freeze.
     join_.open = true;
-    join_.before = before, join_.n = n;
-    join_.lowest = bounds_from_end(before >= 2 ? before - 2 : 0);
+    join_.before = before, join_.undoable = n > 1;
+    join_.lowest = bounds_joined(before);
     if (!split || join_.lowest < split_from) plan_join();
 }
 
 void Lookahead::plan_join() {
     join_.open = false;
     join_.done = timeline_->now();
-    const std::size_t before = join_.before, n = join_.n, lowest = join_.lowest;
-    const bool planned = replan(std::min(lowest, before > 0 ? before - 1 : 0), n > 1);
+    const std::size_t before = join_.before, lowest = join_.lowest;
+    const bool planned = replan_joined(before, lowest, join_.undoable);
     tail_ = before > lowest ? before - lowest : 1;
     if (planned) return;
     // No plan short of the last resort, which is one block's: the window as they found it, and the

@@ -489,7 +489,8 @@ private:
     // plan and its check at the start of the next, where nothing froze in between (indices hold).
     struct Join {
         bool open = false;
-        std::size_t before = 0, lowest = 0, n = 0;
+        bool undoable = false;  // a batch (its undo: snapshot_)
+        std::size_t before = 0, lowest = 0;
         std::int64_t done = -1;    // tick of the last join's plan: one a period
         std::uint32_t waited = 0;  // commits a join waited for one in which nothing freezes
     } join_;
@@ -501,9 +502,11 @@ private:
     void join(Planning when);
     void link_newest();  // join's first half: counted and linked to the block before, not planned
     // Blocks joined after the first `before` (one or a batch): the bounds from the new end (the
-    // junctions before before - 2 were settled), the plan from the junction they joined on. As
-    // replan(); *changed: the lowest segment whose bounds changed.
-    bool plan_joined(std::size_t before, bool undoable = false, std::size_t* changed = nullptr);
+    // junctions before before - 2 were settled; the lowest segment whose bounds changed), then the
+    // plan from there or the junction they joined on, whichever is first (as replan()).
+    std::size_t bounds_joined(std::size_t before) { return bounds_from_end(before >= 2 ? before - 2 : 0); }
+    bool replan_joined(std::size_t before, std::size_t lowest, bool undoable);
+    bool plan_joined(std::size_t before, bool undoable = false) { return replan_joined(before, bounds_joined(before), undoable); }
     // What a plan changes beside the segments, for a batch's undo (plan_batch, rejoin_some).
     struct PlanScalars {
         std::size_t ramp_change = 0;
