@@ -65,8 +65,11 @@ template <class Now>
 PlanningTicks tick_until_room(Planner& planner, AxisState& out, Now now) {
     PlanningTicks t;
     while (planner.depth() >= 64 || planner.free() == 0) {
-        // (A join's first half plans no segment: it counts by the blocks it joins.)
-        const auto planning = [&] { return planner.stats().segments_planned + planner.stats().rejoined; };
+        // (A join's steps plan no segment but one: they count by the blocks joined and the steps.)
+        const auto planning = [&] {
+            const PlannerStats& s = planner.stats();
+            return s.segments_planned + s.rejoined + s.join_steps;
+        };
         const std::uint64_t planned = planning();
         const double begin = static_cast<double>(now());
         planner.tick(out);

@@ -66,9 +66,10 @@ TEST(Reach, BlocksBeyondTheReachJoinInBatchesNotOneByOne) {
     const test::RateRun r = test::run_with_rates(machine, program, {}, run_ticks(machine));
     test::expect_within(r, program, machine);
     const double per_block = static_cast<double>(r.stats.segments_planned) / static_cast<double>(program.size());
-    std::printf("%zu chords: %.1f segment plans a block, %llu blocks waited\n", program.size(), per_block,
-                static_cast<unsigned long long>(r.stats.rejoined));
+    std::printf("%zu chords: %.1f segment plans a block, %llu blocks waited, joins took %llu later steps\n", program.size(),
+                per_block, static_cast<unsigned long long>(r.stats.rejoined), static_cast<unsigned long long>(r.stats.join_steps));
     EXPECT_GT(r.stats.rejoined, 3000u);
+    EXPECT_GT(r.stats.join_steps, 200u);  // under way, a join takes a step a period
     EXPECT_LT(per_block, 10.0);
 }
 

@@ -255,9 +255,11 @@ TEST(PlannerRealTime, BlocksJoiningInBatchesNeitherAllocateNorLock) {
         totals.add(rt_probe::disarm());
     }
     expect_clean(totals, "Planner::add and Planner::update, blocks joining in batches");
-    std::printf("  %d chords added, %llu joined after waiting beyond the window\n", added,
-                static_cast<unsigned long long>(planner.stats().rejoined));
+    std::printf("  %d chords added, %llu joined after waiting beyond the window, in %llu later steps\n", added,
+                static_cast<unsigned long long>(planner.stats().rejoined),
+                static_cast<unsigned long long>(planner.stats().join_steps));
     EXPECT_GT(planner.stats().rejoined, 10'000u);
+    EXPECT_GT(planner.stats().join_steps, 1'000u);  // joins spread over periods ran here too
 }
 
 // firtp_tp's servo-thread calls: a move added per period when there is room (lines and arcs),

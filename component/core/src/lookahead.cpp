@@ -787,8 +787,15 @@ std::size_t Lookahead::refresh_end_flags_below(std::size_t i) {
 }
 
 std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
-    std::size_t changed = count_;
-    for (std::size_t i = last + 1; i-- > 0;) {
+    Backward w{last + 1, last, settled, count_};
+    backward_some(w, static_cast<std::size_t>(-1));
+    return w.changed;
+}
+
+bool Lookahead::backward_some(Backward& w, std::size_t most) {
+    const std::size_t last = w.last, settled = w.settled;
+    for (; w.next > 0 && most > 0; --most) {
+        const std::size_t i = --w.next;
         Segment& s = seg(i);
         double exit_max = 0.0;
         if (exit_is_stop(i)) {
@@ -802,17 +809,21 @@ std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
         const bool same = i < last && exit_max == s.exit_max && entry_max == s.entry_max;
         s.exit_max = exit_max;
         s.entry_max = entry_max;
-        if (!refresh_end_flags(i) && same) break;
-        if (!same) changed = i;
+        if (!refresh_end_flags(i) && same) {
+            w.next = 0;
+            break;
+        }
+        if (!same) w.changed = i;
         if (same && i <= settled) {
             // Only the end-limited flags changed, and the bounds before were found from what they
             // are now: they stand, the flags go on down alone (searching every bound again took
             // 0.5 ms an add at a quadrant of examples/polygon360.ngc, a queue of 256 blocks).
             refresh_end_flags_below(i);
+            w.next = 0;
             break;
         }
     }
-    return changed;
+    return w.next == 0;
 }
 
 double Lookahead::entry_for(std::size_t i) const {
@@ -979,8 +990,12 @@ void Lookahead::open_batch() {
 
 Result Lookahead::add(const Block& block, Planning when) {
     last_add_tick_ = timeline_->now();
-    if (when == Planning::now) plan_added();
-    else if (!batch_.open && deferred_ == 0) open_batch();
+    if (join_.open && end_known()) finish_join();  // (the end its bounds found moves)
+    if (when == Planning::now) {
+        if (batch_.open) plan_batch();
+    } else if (!batch_.open && deferred_ == 0 && !join_.open) {
+        open_batch();
+    }
     const AxisVector delta = block.target - goal_;
     const double length = delta.norm();
     if (length < min_block_length) {  // skipped; its dwell goes to the next block
@@ -1008,8 +1023,9 @@ Result Lookahead::add(const Block& block, Planning when) {
     arrive(s);
     goal_ = block.target;
     finished_ = false;
-    // Beyond the window's reach it waits; so does a block after a join planned in this period (one a period).
-    if (deferred_ > 0 || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()))) {
+    // Beyond the window's reach it waits; so does a block while a join is under way or after one
+    // planned in this period (one a period).
+    if (deferred_ > 0 || join_.open || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()))) {
         seg(count_ + deferred_) = s;
         ++deferred_;
         return Result::ok;

@@ -18,10 +18,14 @@ constexpr double hold_crawl = 1e-3;  // of the speed before it: a hold's junctio
 // ---- Rate --------------------------------------------------------------------------------------
 
 void Lookahead::set_rate(double rate) {
-    plan_added();
     rate = std::clamp(rate, 0.0, max_rate_);
     const bool hold = rate == 0.0;
-    if (hold == held_ && (hold || rate == rate_)) return;
+    const bool same = hold == held_ && (hold || rate == rate_);
+    if (same) {  // (a join under way goes on at the next commit)
+        if (batch_.open) plan_batch();
+        return;
+    }
+    plan_added();
     if (!hold) rate_ = rate;
     // A resume whose plan has not passed yet (retried at each tick) left the hold's braking in the
     // accepted plan: a new rate before it passes resumes too (seed 56, program 634: braked to rest

@@ -146,6 +146,8 @@ void Lookahead::pop_front(bool stop) {
     }
     head_ = (head_ + 1) % segments_.size();
     --count_;
+    if (ramp_change_ != static_cast<std::size_t>(-1) && ramp_change_ > 0) --ramp_change_;
+    if (join_.open) join_popped();
 }
 
 bool Lookahead::take_report(CornerReport& report) {
@@ -158,6 +160,7 @@ bool Lookahead::take_report(CornerReport& report) {
 
 void Lookahead::freeze(const NextStep& n) {
     next_known_ = false;
+    join_.froze = join_.froze || join_.open;  // (a ramp's freeze changes the front segment too)
     const double period = parameters_.period;
     const Segment& front = seg(0);
     // The new frozen step's centre, on the tick grid.
@@ -287,9 +290,14 @@ void Lookahead::plan_batch() {
 }
 
 void Lookahead::commit() {
-    plan_added();
+    if (join_.open) {
+        ++stats_.join_steps;
+        join_step(false);
+    }
+    if (batch_.open) plan_batch();
     const double period = parameters_.period;
     if (retry_ && count_ > 0) {  // a hold's stop or a resume that failed its check: again from here
+        finish_join();
         retry_ = false;
         replan_from_front(!held_);
     }
@@ -300,6 +308,12 @@ void Lookahead::commit() {
         if (!next_due()) {
             if (!next_is_start_) waiting_since_ = -1;
             return;
+        }
+        // A join's next step would change what this freeze reads or leaves near the front, or the
+        // flags a start asks for (final_for_start).
+        if (join_.open && (next_is_start_ || join_front() < join_split_from)) {
+            finish_join();
+            continue;
         }
         if (next_is_start_) {
             if (held_ || retry_) return;  // (a resume not yet checked: the plan after the stop is not)
@@ -448,24 +462,37 @@ std::size_t Lookahead::covered_from(std::size_t from, std::size_t first, double 
 }
 
 bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) {
+    CheckRun c;
+    Checked result = check_begin(first, changed, bad, c);
+    if (result == Checked::corners) result = check_corners(c, static_cast<std::size_t>(-1), bad);
+    return result == Checked::passed;
+}
+
+bool Lookahead::check_measures(const CheckRun& c, std::size_t i) const {
+    const Segment& s = seg(i - c.shift);
+    return s.kind != Kind::stop && s.turn.beta >= straight_angle && std::isfinite(s.tolerance) &&
+           when_[i] + s.checked_reach >= c.unchanged_until;
+}
+
+Lookahead::Checked Lookahead::check_begin(std::size_t first, std::size_t changed, std::size_t* bad, CheckRun& c) {
     limit_failure_ = {};
     std::size_t from = context(first);
     // Held: what follows the hold's stop starts only after a resume, which plans and checks it
     // again; the check ends at the stop.
     const std::size_t stop = held_ ? hold_stop_index() : count_;
     const std::size_t last = stop < count_ ? stop + 1 : count_;
-    if (first >= last) return true;
+    if (first >= last) return Checked::passed;
     // A block its legs do not cover: lower the corner it is entered from.
     for (std::size_t i = first; i < last; ++i) {
         if (!seg(i).unfit) continue;
         if (i > 0 && seg(i - 1).kind != Kind::stop) {
             excess_ = 0.0;
             *bad = i - 1;
-            return false;
+            return Checked::failed;
         }
         if (i == 0 && frozen_.moving) {  // a new feed (or a hold's braking) the motion under way cannot take
             *bad = front_unfit;
-            return false;
+            return Checked::failed;
         }
         ++stats_.unfit;  // entered from rest: a defect
     }
@@ -477,7 +504,7 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
         const NextStep n = next_step();
         if (n.centre - 0.5 * n.step.kernel.width() < -(1.0 + 1e-9) * parameters_.period) {
             *bad = count_ - 1;
-            return false;
+            return Checked::failed;
         }
     }
     double end = 0.0;
@@ -490,12 +517,8 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
     // `changed` on (the legs after it and the junction step before it): nothing moves differently
     // before its widest kernel starts, nor before the first of their kernels does (2 periods to
     // spare). A corner whose last check looked only before that passed on this very motion.
-    double unchanged_until = infinity;
-    auto measured = [&](std::size_t i) {
-        const Segment& s = seg(i);
-        return s.kind != Kind::stop && s.turn.beta >= straight_angle && std::isfinite(s.tolerance) &&
-               when_[i] + s.checked_reach >= unchanged_until;
-    };
+    double& unchanged_until = c.unchanged_until;
+    auto measured = [&](std::size_t i) { return check_measures(c, i); };
     const bool contour = parameters_.tolerance_meaning == ToleranceMeaning::contour;
     for (;;) {
         build_legs(from);
@@ -561,11 +584,20 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             if (d < distance) distance = d, nearest = i;
         }
         *bad = nearest;
-        return false;
+        return Checked::failed;
     }
-    for (std::size_t i = from; i + 1 < last; ++i) {
-        if (!measured(i)) continue;
-        Segment& s = seg(i);
+    c.from = from, c.last = last, c.legs = legs, c.next = from, c.shift = 0;
+    c.begin = begin, c.sharp = sharp, c.one_stage = one_stage;
+    return Checked::corners;
+}
+
+Lookahead::Checked Lookahead::check_corners(CheckRun& c, std::size_t most, std::size_t* bad) {
+    const bool contour = parameters_.tolerance_meaning == ToleranceMeaning::contour;
+    for (; c.next + 1 < c.last && most > 0; ++c.next) {
+        const std::size_t i = c.next;  // (legs_, when_ and leg_of_ as the check built them)
+        if (!check_measures(c, i)) continue;
+        --most;
+        Segment& s = seg(i - c.shift);
         if (contour) {  // the samples across the corner
             double latest = 0.0;
             s.predicted_error = contour_error(legs_, leg_of_[i], when_[i], max_width_, parameters_.period, &latest);
@@ -575,10 +607,11 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
             // chords' sag is bounded by the limits it held.
             const double period = parameters_.period;
             ApproachBounds bounds;
-            if (!sharp && when_[i] - 32.0 * period >= begin)
-                bounds = {machine_acceleration_, one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - check_margin)};
+            if (!c.sharp && when_[i] - 32.0 * period >= c.begin)
+                bounds = {machine_acceleration_, c.one_stage ? HUGE_VAL : machine_jerk_, s.tolerance * (1.0 - check_margin)};
             // (Overlapped, the leg across the corner ends `overlap` along the next block.)
-            const AxisVector offset = split(i) ? AxisVector(-s.overlap_at(s.b) * seg(i + 1).u) : AxisVector(AxisVector::Zero());
+            const std::size_t k = i - c.shift;
+            const AxisVector offset = split(k) ? AxisVector(-s.overlap_at(s.b) * seg(k + 1).u) : AxisVector(AxisVector::Zero());
             const Approach approach = closest_approach(legs_, leg_of_[i], when_[i], period, 1, bounds, offset);
             s.predicted_error = approach.distance;
             s.checked_reach = approach.latest - when_[i];
@@ -586,18 +619,24 @@ bool Lookahead::check(std::size_t first, std::size_t changed, std::size_t* bad) 
         const double epsilon = s.tolerance * (1.0 - check_margin);
         excess_ = s.predicted_error / epsilon;
         if (s.predicted_error > epsilon) {
-            *bad = i;
-            return false;
+            *bad = i - c.shift;
+            return Checked::failed;
         }
     }
-    return true;
+    return c.next + 1 < c.last ? Checked::corners : Checked::passed;
 }
 
 bool Lookahead::replan(std::size_t first, bool undoable) {
+    Replan r;
+    if (!replan_begin(first, r)) return true;
+    return replan_run(r, undoable);
+}
+
+bool Lookahead::replan_begin(std::size_t first, Replan& r) {
     next_known_ = false;
     first = std::min(first, take_ramp_change());
     // Under way, a failed change falls back on the accepted plan (at rest there is nothing to keep).
-    const bool fallback = frozen_.moving && (snapshot_taken_ || (held_ && !hold_stop_placed()));
+    r.fallback = frozen_.moving && (snapshot_taken_ || (held_ && !hold_stop_placed()));
     if (held_ && frozen_.moving && !hold_stop_placed()) {
         if (!snapshot_taken_) take_snapshot();
         place_hold_stop();
@@ -607,142 +646,169 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
     snapshot_taken_ = false;
     if (first >= count_) {
         refresh_current_leg();
-        return true;
+        return false;
     }
     // The accepted plan, restored if no change passes the check: [first - 1, count) now (planning
     // segment `first` sets the junction fields of the one before), the rest on the first failure
     // (untouched until then).
-    const std::size_t kept = first > 0 ? first - 1 : 0;
-    for (std::size_t i = kept; i < count_; ++i) saved_[i] = seg(i);
-    bool saved_all = kept == 0;
-    std::size_t from = first;
-    // The corner the last attempt lowered, its cap before, and the limit that failed then.
-    std::size_t lowered = count_;
-    double lowered_cap = 0.0;
-    LimitCheck lowered_for;
-    for (int attempt = 0;; ++attempt) {
-        forward(from);
-        // The check starts where the motion changed: the backward pass also goes back over blocks
-        // whose speeds it found unchanged (their end-of-path flags flipped), and forward() plans
-        // them again to the same legs, which were checked (a whole queue of 256 blocks re-checked
-        // at one add of examples/polygon360.ngc).
-        std::size_t changed = from;
-        if (attempt == 0 && !held_ && frozen_.moving)  // (at rest the start moves with the clock)
-            while (changed < count_ && same_motion(seg(changed), saved_[changed])) ++changed;
+    r.kept = first > 0 ? first - 1 : 0;
+    for (std::size_t i = r.kept; i < count_; ++i) saved_[i] = seg(i);
+    r.saved_all = r.kept == 0;
+    r.from = first;
+    r.attempt = 0;
+    r.lowered = count_;
+    return true;
+}
+
+void Lookahead::replan_forward(Replan& r) {
+    forward(r.from);
+    // The check starts where the motion changed: the backward pass also goes back over blocks
+    // whose speeds it found unchanged (their end-of-path flags flipped), and forward() plans
+    // them again to the same legs, which were checked (a whole queue of 256 blocks re-checked
+    // at one add of examples/polygon360.ngc).
+    r.changed = r.from;
+    if (r.attempt == 0 && !held_ && frozen_.moving)  // (at rest the start moves with the clock)
+        while (r.changed < count_ && same_motion(seg(r.changed), saved_[r.changed])) ++r.changed;
+}
+
+void Lookahead::replan_passed(const Replan& r) {
+    for (std::size_t i = r.changed; i < count_; ++i) seg(i).unchecked = false;
+}
+
+bool Lookahead::replan_run(Replan& r, bool undoable) {
+    for (;;) {
+        replan_forward(r);
         std::size_t bad = count_;
-        if (check(from, changed, &bad)) {
-            for (std::size_t i = changed; i < count_; ++i) seg(i).unchecked = false;
+        if (check(r.from, r.changed, &bad)) {
+            replan_passed(r);
             break;
         }
-        ++stats_.checks_failed;
-        // The same limit failed at the same moment by the same amount: lowering that corner did
-        // not touch it, nor will lowering it further (a change retried at every tick lowered the
-        // same corner 0.9x a try until the tool crawled: RateChange seed 77 program 51).
-        const LimitCheck& f = limit_failure_;
-        auto near = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max({std::abs(x), std::abs(y), 1.0}); };
-        const bool futile = fallback && lowered < count_ && !f.ok && !lowered_for.ok && f.axis == lowered_for.axis &&
-                            f.derivative == lowered_for.derivative && near(f.time, lowered_for.time) && near(f.value, lowered_for.value);
-        if (futile) seg(lowered).learned_cap = lowered_cap;
-        lowered = count_;
-        // Nothing left to lower: what is kept instead depends on who asked.
-        const bool no_plan = futile || bad == front_unfit || attempt == max_check_attempts || bad + 1 >= count_;
-        // A batch with no plan short of the last resort: undone (plan_added).
-        if (undoable && no_plan) return false;
-        if (fallback && no_plan) {
-            // No plan after the hold's or the resume's change passes: the accepted one goes on
-            // (never an unchecked one) and the change is tried again at the next tick, from the
-            // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
-            // with 256 blocks waiting: tests/soak).
-            const bool same_blocks = count_ == snapshot_count_;
-            for (std::size_t i = 0; same_blocks && i < snapshot_count_; ++i) {
-                const Segment& s = seg(i);
-                if (s.line == snapshot_[i].line && s.end == snapshot_[i].end)
-                    snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, s.learned_cap);
-            }
-            // (A hold's split moved the ring's head; the blocks the change left out come back as
-            // they were, after the kept ones.)
-            head_ = snapshot_head_;
-            for (std::size_t i = 0; i < snapshot_count_; ++i) seg(i) = snapshot_[i];
-            count_ = snapshot_count_ + snapshot_cut_;
-            deferred_ -= snapshot_cut_;
-            snapshot_cut_ = 0;
-            retry_ = true;
-            refresh_current_leg();
-            return true;
-        }
-        if (!saved_all) {
-            for (std::size_t i = 0; i < kept; ++i) saved_[i] = seg(i);
-            saved_all = true;
-        }
-        if (no_plan) {  // (futile only where there is a fallback: it returned above)
-            // Keep the plan accepted before (it stopped where the path ended then) and start the
-            // newest block from rest after it. Also where the block under way cannot take the new
-            // plan (front_unfit): restoring the accepted plan alone left the newest block unplanned,
-            // at speed 0, and the tool rested there for good (lcnc__tort.ngc, its line 95).
-            for (std::size_t i = 0; i + 1 < count_; ++i) seg(i) = saved_[i];
-            if (count_ >= 2) {
-                // It was the last block: as it was classified then (adding the newest changed that).
-                seg(count_ - 2).forced_stop = true;
-                junction_caps(count_ - 2);
-                classify(count_ - 2);
-                if (count_ >= 3) junction_caps(count_ - 3);
-            }
-            backward(count_ - 1);
-            from = std::min(count_ >= 2 ? count_ - 2 : 0, take_ramp_change());
-            // At rest, a plan restored from a hold brakes to a standstill and cannot start again
-            // (machine 61, program 1689): nothing is under way to keep, so from rest again.
-            if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
-            forward(from);
-            // Not built as planned now: as wide as any kernel checked so far, for context().
-            for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true, seg(i).width = std::max(seg(i).width, max_width_);
-            width_bound_ = std::max(width_bound_, max_width_);
-            break;
-        }
-        // A limit failed next to ramps sharing a corner's jerk stage at J T2: an axis swings the
-        // other way within it whatever the speed. They keep the run's caps (h = J T2 / 2).
-        if (excess_ == 0.0 && seg(bad).ramps_capped && seg(bad).kind == Kind::corner && !seg(bad).junction.sparse) {
-            seg(bad).ramps_capped = false;
-            junction_caps(bad);
-            from = std::min({from, bad, take_ramp_change()});
-            continue;
-        }
-        // An overlapped corner that failed goes back to one step before it is lowered.
-        if (overlapped(bad)) {
-            seg(bad).no_overlap = true;
-            junction_caps(bad);
-            from = std::min({from, bad, backward(bad + 1), take_ramp_change()});
-            continue;
-        }
-        // A block that ramped on from its start keeps the start's speed before its corner is
-        // lowered (a start from rest used to keep one speed: random programs ran up to 1.2 % slower).
-        if (seg(bad).ramped_on && !seg(bad).one_speed_start) {
-            seg(bad).one_speed_start = true;
-            from = std::min(from, bad);
-            continue;
-        }
-        // Lower the corner: the error grows about with the square of the speed.
-        Segment& j = seg(bad);
-        double factor = check_backoff;
-        if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
-        const double lower = factor * std::max(j.b, j.next_a);
-        lowered = bad, lowered_cap = j.learned_cap, lowered_for = limit_failure_;
-        if (lower > 1e-6 * j.feed) {
-            j.learned_cap = std::min(j.learned_cap, lower);
-        } else {  // not even a crawl passes it: a stop (a corner at speed 0 would never start again)
-            j.forced_stop = true;
-            junction_caps(bad);
-        }
-        // A dense block keeps one speed: pinned to a junction this slow it would crawl. It ramps
-        // on its own instead (sparse).
-        for (std::size_t k : {bad, bad + 1})
-            if (k < count_ && seg(k).dense && !(k == 0 && frozen_.moving) && j.learned_cap < 0.5 * sparse_estimate(k)) {
-                seg(k).sparse_only = true;
-                classify(k);
-                if (k > 0) junction_caps(k - 1);
-                if (k + 1 < count_) junction_caps(k);
-            }
-        from = std::min({from, bad, backward(bad), take_ramp_change()});
+        const Remedy remedy = replan_failed(r, bad, undoable);
+        if (remedy == Remedy::undo) return false;
+        if (remedy == Remedy::kept) return true;
+        if (remedy == Remedy::planned) break;
+        ++r.attempt;
     }
+    replan_end(r.from);
+    return true;
+}
+
+Lookahead::Remedy Lookahead::replan_failed(Replan& r, std::size_t bad, bool undoable) {
+    ++stats_.checks_failed;
+    // The same limit failed at the same moment by the same amount: lowering that corner did
+    // not touch it, nor will lowering it further (a change retried at every tick lowered the
+    // same corner 0.9x a try until the tool crawled: RateChange seed 77 program 51).
+    const LimitCheck& f = limit_failure_;
+    auto near = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max({std::abs(x), std::abs(y), 1.0}); };
+    const bool futile = r.fallback && r.lowered < count_ && !f.ok && !r.lowered_for.ok && f.axis == r.lowered_for.axis &&
+                        f.derivative == r.lowered_for.derivative && near(f.time, r.lowered_for.time) &&
+                        near(f.value, r.lowered_for.value);
+    if (futile) seg(r.lowered).learned_cap = r.lowered_cap;
+    r.lowered = count_;
+    std::size_t& from = r.from;
+    // Nothing left to lower: what is kept instead depends on who asked.
+    const bool no_plan = futile || bad == front_unfit || r.attempt == max_check_attempts || bad + 1 >= count_;
+    // A batch with no plan short of the last resort: undone (plan_added). (Nothing after the
+    // first attempt reads saved_ for a batch: a join's may be from before steps froze.)
+    if (undoable && no_plan) return Remedy::undo;
+    if (r.fallback && no_plan) {
+        // No plan after the hold's or the resume's change passes: the accepted one goes on
+        // (never an unchecked one) and the change is tried again at the next tick, from the
+        // corners this try lowered (each retry made the same 13 attempts again, 3 ms a tick
+        // with 256 blocks waiting: tests/soak).
+        const bool same_blocks = count_ == snapshot_count_;
+        for (std::size_t i = 0; same_blocks && i < snapshot_count_; ++i) {
+            const Segment& s = seg(i);
+            if (s.line == snapshot_[i].line && s.end == snapshot_[i].end)
+                snapshot_[i].learned_cap = std::min(snapshot_[i].learned_cap, s.learned_cap);
+        }
+        // (A hold's split moved the ring's head; the blocks the change left out come back as
+        // they were, after the kept ones.)
+        head_ = snapshot_head_;
+        for (std::size_t i = 0; i < snapshot_count_; ++i) seg(i) = snapshot_[i];
+        count_ = snapshot_count_ + snapshot_cut_;
+        deferred_ -= snapshot_cut_;
+        snapshot_cut_ = 0;
+        retry_ = true;
+        refresh_current_leg();
+        return Remedy::kept;
+    }
+    if (!r.saved_all) {
+        for (std::size_t i = 0; i < r.kept; ++i) saved_[i] = seg(i);
+        r.saved_all = true;
+    }
+    if (no_plan) {  // (futile only where there is a fallback: it returned above)
+        // Keep the plan accepted before (it stopped where the path ended then) and start the
+        // newest block from rest after it. Also where the block under way cannot take the new
+        // plan (front_unfit): restoring the accepted plan alone left the newest block unplanned,
+        // at speed 0, and the tool rested there for good (lcnc__tort.ngc, its line 95).
+        for (std::size_t i = 0; i + 1 < count_; ++i) seg(i) = saved_[i];
+        if (count_ >= 2) {
+            // It was the last block: as it was classified then (adding the newest changed that).
+            seg(count_ - 2).forced_stop = true;
+            junction_caps(count_ - 2);
+            classify(count_ - 2);
+            if (count_ >= 3) junction_caps(count_ - 3);
+        }
+        backward(count_ - 1);
+        from = std::min(count_ >= 2 ? count_ - 2 : 0, take_ramp_change());
+        // At rest, a plan restored from a hold brakes to a standstill and cannot start again
+        // (machine 61, program 1689): nothing is under way to keep, so from rest again.
+        if (!frozen_.moving && !(seg(0).a > 0.0)) from = 0;
+        forward(from);
+        // Not built as planned now: as wide as any kernel checked so far, for context().
+        for (std::size_t i = from; i < count_; ++i) seg(i).unchecked = true, seg(i).width = std::max(seg(i).width, max_width_);
+        width_bound_ = std::max(width_bound_, max_width_);
+        return Remedy::planned;
+    }
+    // A limit failed next to ramps sharing a corner's jerk stage at J T2: an axis swings the
+    // other way within it whatever the speed. They keep the run's caps (h = J T2 / 2).
+    if (excess_ == 0.0 && seg(bad).ramps_capped && seg(bad).kind == Kind::corner && !seg(bad).junction.sparse) {
+        seg(bad).ramps_capped = false;
+        junction_caps(bad);
+        from = std::min({from, bad, take_ramp_change()});
+        return Remedy::again;
+    }
+    // An overlapped corner that failed goes back to one step before it is lowered.
+    if (overlapped(bad)) {
+        seg(bad).no_overlap = true;
+        junction_caps(bad);
+        from = std::min({from, bad, backward(bad + 1), take_ramp_change()});
+        return Remedy::again;
+    }
+    // A block that ramped on from its start keeps the start's speed before its corner is
+    // lowered (a start from rest used to keep one speed: random programs ran up to 1.2 % slower).
+    if (seg(bad).ramped_on && !seg(bad).one_speed_start) {
+        seg(bad).one_speed_start = true;
+        from = std::min(from, bad);
+        return Remedy::again;
+    }
+    // Lower the corner: the error grows about with the square of the speed.
+    Segment& j = seg(bad);
+    double factor = check_backoff;
+    if (excess_ > 1.0) factor = std::clamp(0.999 / std::sqrt(excess_), 0.5, 0.999);
+    const double lower = factor * std::max(j.b, j.next_a);
+    r.lowered = bad, r.lowered_cap = j.learned_cap, r.lowered_for = limit_failure_;
+    if (lower > 1e-6 * j.feed) {
+        j.learned_cap = std::min(j.learned_cap, lower);
+    } else {  // not even a crawl passes it: a stop (a corner at speed 0 would never start again)
+        j.forced_stop = true;
+        junction_caps(bad);
+    }
+    // A dense block keeps one speed: pinned to a junction this slow it would crawl. It ramps
+    // on its own instead (sparse).
+    for (std::size_t k : {bad, bad + 1})
+        if (k < count_ && seg(k).dense && !(k == 0 && frozen_.moving) && j.learned_cap < 0.5 * sparse_estimate(k)) {
+            seg(k).sparse_only = true;
+            classify(k);
+            if (k > 0) junction_caps(k - 1);
+            if (k + 1 < count_) junction_caps(k);
+        }
+    from = std::min({from, bad, backward(bad), take_ramp_change()});
+    return Remedy::again;
+}
+
+void Lookahead::replan_end(std::size_t from) {
     // What bounded each junction the passes went over (for the report).
     for (std::size_t i = from; i + 1 < count_; ++i) {
         Segment& s = seg(i);
@@ -765,7 +831,6 @@ bool Lookahead::replan(std::size_t first, bool undoable) {
         }
     }
     refresh_current_leg();
-    return true;
 }
 
 }  // namespace firtp

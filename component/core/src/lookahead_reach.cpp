@@ -9,6 +9,13 @@
 //   planned on its own re-planned and re-checked the stop at the end of the known path, which
 //   on a dense path spans dozens of blocks (0.35 mm chords at jerk 1e5: 130 us an add). A batch
 //   pays for that stop once.
+// - Under way, a batch's join is spread over the periods after it, one step a commit: the bounds
+//   16 junctions at a time, the forward pass, the check's legs and limits, its corners 16 at a
+//   time (Lookahead::Join). At jerk 1e5 a join of 16 chords re-plans the 35-50 blocks braking to
+//   the window's end: 85-115 us in each of two periods before, at most 44 us a period now
+//   (firtp_worst_period). Steps freeze meanwhile, far before the join's blocks; where what it
+//   changes comes within join_split_from segments of the front, or a start is due, the rest is
+//   done at once. The passes and the check are the same on the same blocks: so is the plan.
 //
 // The stop at the window's end then lies beyond anything the motion commits to before more blocks
 // join, so the motion is that of the whole queue planned, but where a check lowered a corner for a
@@ -36,11 +43,10 @@ constexpr std::size_t horizon_growth = 8;
 // A batch that no plan passes is undone from a copy of the window: beyond this many blocks, one
 // joins at a time (the copy would cost more than the plans it saves).
 constexpr std::size_t batch_window_most = 512;
-// A batch's plan waits for the next period where the blocks before what it changes are this many
-// (the next step's, and the one after it, may freeze then); a batch waits at most this many commits
-// for a period in which nothing freezes (then it is planned whole, as it is where little is under way).
-constexpr std::size_t split_from = 4;
-constexpr std::uint32_t join_waits_most = 8;
+// Under way, a batch's join takes one step a commit (Lookahead::Join): so many junctions' bounds,
+// or corners measured, a step.
+constexpr std::size_t bounds_a_step = 16;
+constexpr std::size_t corners_a_step = 16;
 
 }  // namespace
 
@@ -111,38 +117,106 @@ void Lookahead::rejoin_some() {
     // expect.)
     const bool batch = !held_ && !retry_ && before <= batch_window_most;
     const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
-    // A batch's plan comes in the next period if nothing freezes in this one; it waits a few
-    // commits for such a period.
-    const bool under_way = n > 1 && frozen_.moving, split = under_way && !next_due();
-    if (under_way && !split && ++join_.waited <= join_waits_most) return;
-    join_.waited = 0;
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
         undo_ = plan_scalars();
     }
     for (std::size_t k = 0; k < n; ++k) take_waiting(), link_newest();
-    // The bounds now, one plan for them all (as plan_batch) now or at the next commit: where what
-    // changed lies past the steps the next period may freeze.
-    join_.open = true;
-    join_.before = before, join_.undoable = n > 1;
-    join_.lowest = bounds_joined(before);
-    if (!split || join_.lowest < split_from) plan_join();
+    // The bounds from the new end (the junctions before before - 2 were settled), then one plan
+    // for them all from there or the junction they joined on, whichever is first (as plan_batch).
+    const std::int64_t done = join_.done;
+    join_ = Join{};
+    join_.open = true, join_.undoable = n > 1, join_.done = done;
+    join_.before = before;
+    join_.bounds = {count_, count_ - 1, before >= 2 ? before - 2 : 0, count_};
+    join_step(!(n > 1 && frozen_.moving));
 }
 
-void Lookahead::plan_join() {
+std::size_t Lookahead::join_front() const {
+    const Join& j = join_;
+    const std::size_t joined = j.before > 0 ? j.before - 1 : 0;
+    switch (j.stage) {
+        case Join::Stage::bounds: return std::min(j.bounds.next > 0 ? j.bounds.next - 1 : 0, joined);
+        case Join::Stage::plan: return std::min(j.lowest, joined);
+        case Join::Stage::check: return j.plan.from;
+        case Join::Stage::corners: return std::min(j.plan.from, j.check.from - j.check.shift);
+    }
+    return 0;
+}
+
+void Lookahead::join_popped() {
+    Join& j = join_;
+    auto down = [](std::size_t& i) { i = i > 0 ? i - 1 : 0; };
+    ++j.pops;
+    down(j.before), down(j.lowest);
+    down(j.bounds.next), down(j.bounds.last), down(j.bounds.settled), down(j.bounds.changed);
+    down(j.plan.from), down(j.plan.changed), down(j.plan.kept), down(j.plan.lowered);
+    ++j.check.shift;
+}
+
+void Lookahead::join_step(bool whole) {
+    Join& j = join_;
+    whole = whole || join_front() < join_split_from;
+    std::size_t bad = count_;
+    Checked checked = Checked::corners;
+    switch (j.stage) {
+        case Join::Stage::bounds:
+            if (!backward_some(j.bounds, whole ? static_cast<std::size_t>(-1) : bounds_a_step)) return;
+            // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
+            // (bounds_from_end).
+            if (count_ >= 3) refresh_end_flags_below(count_ - 2);
+            j.lowest = j.bounds.changed;
+            j.stage = Join::Stage::plan;
+            if (!whole) return;
+            [[fallthrough]];
+        case Join::Stage::plan:
+            // (link() changed junction before - 2 on.) The block before them is planned again
+            // whatever its bounds: its exit was the end of the path's stop and is a corner now.
+            if (!replan_begin(std::min(j.lowest, j.before > 0 ? j.before - 1 : 0), j.plan)) return join_planned(true);
+            replan_forward(j.plan);
+            j.stage = Join::Stage::check;
+            if (!whole) return;
+            [[fallthrough]];
+        case Join::Stage::check:
+            checked = check_begin(j.plan.from, j.plan.changed, &bad, j.check);
+            j.stage = Join::Stage::corners;
+            if (checked == Checked::corners && !whole) return;
+            [[fallthrough]];
+        case Join::Stage::corners:
+            if (checked == Checked::corners)
+                checked = check_corners(j.check, whole ? static_cast<std::size_t>(-1) : corners_a_step, &bad);
+            break;
+    }
+    if (checked == Checked::corners) return;
+    if (checked == Checked::passed) {
+        replan_passed(j.plan);
+        replan_end(j.plan.from);
+        return join_planned(true);
+    }
+    switch (replan_failed(j.plan, bad, j.undoable)) {
+        case Remedy::undo: return join_planned(false);
+        case Remedy::kept: return join_planned(true);
+        case Remedy::planned: replan_end(j.plan.from); return join_planned(true);
+        case Remedy::again: ++j.plan.attempt; return join_planned(replan_run(j.plan, j.undoable));
+    }
+}
+
+void Lookahead::join_planned(bool planned) {
     join_.open = false;
     join_.done = timeline_->now();
     const std::size_t before = join_.before, lowest = join_.lowest;
-    const bool planned = replan_joined(before, lowest, join_.undoable);
     tail_ = before > lowest ? before - lowest : 1;
     if (planned) return;
-    // No plan short of the last resort, which is one block's: the window as they found it, and the
-    // first of them alone.
-    for (std::size_t i = 0; i < before; ++i) seg(i) = snapshot_[i];
+    // No plan short of the last resort, which is one block's: the window as they found it (less
+    // what froze since), and the first of them alone.
+    for (std::size_t i = join_.froze ? 1 : 0; i < before; ++i) seg(i) = snapshot_[i + join_.pops];
     deferred_ += count_ - before;
     stats_.rejoined -= count_ - before;
     count_ = before;
-    restore(undo_);
+    PlanScalars undo = undo_;
+    if (undo.ramp_change != static_cast<std::size_t>(-1)) undo.ramp_change = undo.ramp_change > join_.pops ? undo.ramp_change - join_.pops : 0;
+    if (join_.froze) undo.max_width = std::max(undo.max_width, max_width_);  // (the frozen steps' kernels)
+    restore(undo);
     ++stats_.batches_undone;
     take_waiting();
     join(Planning::now);

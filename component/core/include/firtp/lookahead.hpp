@@ -63,7 +63,7 @@ public:
     Result add(const Block& block, Planning when = Planning::now);
     // No more blocks follow for now: the stop at the end is the end of the program.
     void finish() {
-        finish_join();
+        if (!finished_) finish_join();  // (the end a join's bounds found moves)
         finished_ = true;
     }
     // Freeze every step whose kernel starts by the timeline's current tick: its leg goes to the
@@ -318,6 +318,12 @@ private:
     // alone changed plans as before (a join of 16 chords re-planned 207 blocks behind them for a
     // flag, where 76-92 changed speed).
     std::size_t backward(std::size_t last, std::size_t settled = 0);
+    // The same pass resumable (a join's, over several periods): `next` segments left to go down
+    // from, the lowest changed so far (count_: none).
+    struct Backward {
+        std::size_t next = 0, last = 0, settled = 0, changed = 0;
+    };
+    bool backward_some(Backward& w, std::size_t most);  // at most `most` junctions; true: the pass ended
     double corner_exit_cap(std::size_t i) const;  // a corner's exit bound but for the next block's entry
     bool exit_end(std::size_t i) const;  // whether segment i's exit_max depends on the end of the known path
     bool settled(std::size_t i) const;   // junction i stays as it is whatever blocks come next
@@ -437,10 +443,29 @@ private:
     void refresh_current_leg();
     // false: `undoable` (a batch of blocks) and no plan passed short of the last resort.
     bool replan(std::size_t first_changed, bool undoable = false);
+    // replan()'s steps, so a join can take them in separate periods: begin (false: nothing to
+    // plan), a forward pass and the motion it changed, then a check; a failed check's remedy
+    // (again: plan and check again; undo / kept: return false / true; planned: the last resort),
+    // and what bounded each junction once a plan stands.
+    struct Replan {
+        std::size_t from = 0, changed = 0, kept = 0;  // kept: saved_ holds the accepted plan from here
+        bool fallback = false, saved_all = false;
+        int attempt = 0;
+        std::size_t lowered = 0;  // the corner the last attempt lowered (count_: none), its cap before
+        double lowered_cap = 0.0;
+        LimitCheck lowered_for;
+    };
+    enum class Remedy : std::uint8_t { again, undo, kept, planned };
+    bool replan_begin(std::size_t first, Replan& r);
+    void replan_forward(Replan& r);
+    Remedy replan_failed(Replan& r, std::size_t bad, bool undoable);
+    bool replan_run(Replan& r, bool undoable);  // from a forward pass on, to the end
+    void replan_passed(const Replan& r);
+    void replan_end(std::size_t from);
     // The backward pass from the newest block, junctions up to `settled` settled before: the
     // lowest segment whose bounds changed (the end flags follow as far as they change).
     std::size_t bounds_from_end(std::size_t settled);
-    // What add(at_update) or a join left, before anything reads the plan (each commit asks: inline).
+    // What add(at_update) or a join left, before a change of rate reads the plan.
     void plan_added() {
         finish_join();
         if (batch_.open) plan_batch();
@@ -457,6 +482,17 @@ private:
     // The plan from segment `first` on, its corners from where the motion changed (`changed` >=
     // first; count_: nowhere) on; false and *bad: the corner to lower.
     bool check(std::size_t first, std::size_t changed, std::size_t* bad);
+    // A check in two parts: its legs and their limits, then the corners (a join's, a few a period).
+    // Indices as build_legs() made its arrays; `shift` segments have left the window since.
+    struct CheckRun {
+        std::size_t from = 0, last = 0, legs = 0, next = 0, shift = 0;
+        double begin = 0.0, unchanged_until = 0.0;
+        bool sharp = false, one_stage = false;
+    };
+    enum class Checked : std::uint8_t { failed, passed, corners };
+    Checked check_begin(std::size_t first, std::size_t changed, std::size_t* bad, CheckRun& c);
+    Checked check_corners(CheckRun& c, std::size_t most, std::size_t* bad);  // at most `most` measured
+    bool check_measures(const CheckRun& c, std::size_t i) const;  // corner i (as built) is measured
     // From a segment's entry step to the next segment's: its legs, and a stop's rest.
     static double span(const Segment& s) { return s.x0 + s.xp + s.x1 + (s.kind == Kind::stop ? s.rest : s.overlap_time()); }
     std::size_t context(std::size_t first) const;  // where a check from `first` first builds its legs (a guess)
@@ -485,19 +521,31 @@ private:
     void defer_beyond(std::size_t keep);  // a change of rate: the blocks after `keep` wait
     void take_waiting();          // the first waiting block, as it came, at ring slot count_
     void rejoin_some();           // at each commit
-    // A join in two periods (lookahead_reach.cpp): the blocks linked and their bounds in one, the
-    // plan and its check at the start of the next, where nothing froze in between (indices hold).
+    // A join over several periods (lookahead_reach.cpp), one step a commit: the bounds a few
+    // junctions at a time, the forward pass, the check's legs and limits, its corners a few at a
+    // time. Steps freeze meanwhile, before the blocks the join changes (indices shift: popped()).
     struct Join {
+        enum class Stage : std::uint8_t { bounds, plan, check, corners } stage = Stage::bounds;
         bool open = false;
         bool undoable = false;  // a batch (its undo: snapshot_)
+        bool froze = false;     // a step froze since it opened (the front segment is the motion's now)
         std::size_t before = 0, lowest = 0;
-        std::int64_t done = -1;    // tick of the last join's plan: one a period
-        std::uint32_t waited = 0;  // commits a join waited for one in which nothing freezes
+        std::size_t pops = 0;   // segments that left the window since it opened (snapshot_'s offset)
+        Backward bounds;
+        Replan plan;
+        CheckRun check;
+        std::int64_t done = -1;  // tick of the last join's plan: one a period
     } join_;
     void finish_join() {
-        if (join_.open) plan_join();
+        while (join_.open) join_step(true);
     }
-    void plan_join();
+    // What a join's step changes lies at least this many segments from the front: the next
+    // step freezes the front block's exit and reads the two after it. Nearer, the rest at once.
+    static constexpr std::size_t join_split_from = 4;
+    void join_step(bool whole);   // the next step (whole: all of them)
+    std::size_t join_front() const;  // the lowest segment the open join may still change
+    void join_popped();           // the front segment left the window: the join's indices shift
+    void join_planned(bool planned);
     // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
     void join(Planning when);
     void link_newest();  // join's first half: counted and linked to the block before, not planned
