@@ -325,6 +325,8 @@ void Lookahead::commit() {
             waiting_since_ = -1;
         }
         freeze(next_step());
+        // A batch's undo restores the window as the join found it: the front as it is now.
+        if (join_.open && join_.undoable && count_ > 0) snapshot_[join_.pops] = seg(0);
     }
 }
 

@@ -208,8 +208,8 @@ void Lookahead::join_planned(bool planned) {
     tail_ = before > lowest ? before - lowest : 1;
     if (planned) return;
     // No plan short of the last resort, which is one block's: the window as they found it (less
-    // what froze since), and the first of them alone.
-    for (std::size_t i = join_.froze ? 1 : 0; i < before; ++i) seg(i) = snapshot_[i + join_.pops];
+    // what froze since: commit() keeps the front's copy), and the first of them alone.
+    for (std::size_t i = 0; i < before; ++i) seg(i) = snapshot_[i + join_.pops];
     deferred_ += count_ - before;
     stats_.rejoined -= count_ - before;
     count_ = before;

@@ -528,7 +528,7 @@ private:
         enum class Stage : std::uint8_t { bounds, plan, check, corners } stage = Stage::bounds;
         bool open = false;
         bool undoable = false;  // a batch (its undo: snapshot_)
-        bool froze = false;     // a step froze since it opened (the front segment is the motion's now)
+        bool froze = false;     // a step froze since it opened (its kernel may be wider than any before)
         std::size_t before = 0, lowest = 0;
         std::size_t pops = 0;   // segments that left the window since it opened (snapshot_'s offset)
         Backward bounds;
