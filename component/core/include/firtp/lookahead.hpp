@@ -523,7 +523,8 @@ private:
     void rejoin_some();           // at each commit
     // A join over several periods (lookahead_reach.cpp), one step a commit: the bounds a few
     // junctions at a time, the forward pass, the check's legs and limits, its corners a few at a
-    // time. Steps freeze meanwhile, before the blocks the join changes (indices shift: popped()).
+    // time; a batch's, while the motion is under way. Steps freeze meanwhile, before the blocks the
+    // join changes (its indices shift: join_popped()).
     struct Join {
         enum class Stage : std::uint8_t { bounds, plan, check, corners } stage = Stage::bounds;
         bool open = false;
