@@ -477,6 +477,7 @@ bool Lookahead::check_measures(const CheckRun& c, std::size_t i) const {
 }
 
 Lookahead::Checked Lookahead::check_begin(std::size_t first, std::size_t changed, std::size_t* bad, CheckRun& c) {
+    c = CheckRun{};  // (a join's: segments may have left the window since it opened, none since this build)
     limit_failure_ = {};
     std::size_t from = context(first);
     // Held: what follows the hold's stop starts only after a resume, which plans and checks it
@@ -588,7 +589,7 @@ Lookahead::Checked Lookahead::check_begin(std::size_t first, std::size_t changed
         *bad = nearest;
         return Checked::failed;
     }
-    c.from = from, c.last = last, c.legs = legs, c.next = from, c.shift = 0;
+    c.from = from, c.last = last, c.legs = legs, c.next = from;
     c.begin = begin, c.sharp = sharp, c.one_stage = one_stage;
     return Checked::corners;
 }
