@@ -1059,10 +1059,17 @@ void Lookahead::link_newest() {
     else classify(0);
 }
 
-bool Lookahead::replan_joined(std::size_t before, std::size_t lowest, bool undoable) {
+std::size_t Lookahead::joined_first(std::size_t before, std::size_t lowest) {
     // (link() changed junction before - 2 on.) The block before them is planned again whatever its
     // bounds: its exit was the end of the path's stop and is a corner now.
-    return replan(std::min(lowest, before > 0 ? before - 1 : 0), undoable);
+    return std::min(lowest, before > 0 ? before - 1 : 0);
+}
+
+bool Lookahead::plan_joined(std::size_t before, bool undoable) {
+    Backward bounds = bounds_joined(before);
+    backward_some(bounds, static_cast<std::size_t>(-1));
+    settle_end_flags();
+    return replan(joined_first(before, bounds.changed), undoable);
 }
 
 void Lookahead::restore(const PlanScalars& p) {
@@ -1071,12 +1078,10 @@ void Lookahead::restore(const PlanScalars& p) {
     next_known_ = false;
 }
 
-std::size_t Lookahead::bounds_from_end(std::size_t settled) {
-    const std::size_t changed = backward(count_ - 1, settled);
+void Lookahead::settle_end_flags() {
     // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
-    // (the pass above may have stopped before it; the bounds are the same).
+    // (the backward pass may have stopped before it; the bounds are the same).
     if (count_ >= 3) refresh_end_flags_below(count_ - 2);
-    return changed;
 }
 
 }  // namespace firtp

@@ -589,7 +589,7 @@ Lookahead::Checked Lookahead::check_begin(std::size_t first, std::size_t changed
         *bad = nearest;
         return Checked::failed;
     }
-    c.from = from, c.last = last, c.legs = legs, c.next = from;
+    c.from = from, c.last = last, c.next = from;
     c.begin = begin, c.sharp = sharp, c.one_stage = one_stage;
     return Checked::corners;
 }

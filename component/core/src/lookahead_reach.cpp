@@ -128,7 +128,7 @@ void Lookahead::rejoin_some() {
     join_ = Join{};
     join_.open = true, join_.undoable = n > 1, join_.done = done;
     join_.before = before;
-    join_.bounds = {count_, count_ - 1, before >= 2 ? before - 2 : 0, count_};
+    join_.bounds = bounds_joined(before);
     join_step(!(n > 1 && frozen_.moving));
 }
 
@@ -162,17 +162,13 @@ void Lookahead::join_step(bool whole) {
     switch (j.stage) {
         case Join::Stage::bounds:
             if (!backward_some(j.bounds, whole ? static_cast<std::size_t>(-1) : bounds_a_step)) return;
-            // Junction count_ - 3 is settled now: its end-limited flags, and those they lift, follow
-            // (bounds_from_end).
-            if (count_ >= 3) refresh_end_flags_below(count_ - 2);
+            settle_end_flags();
             j.lowest = j.bounds.changed;
             j.stage = Join::Stage::plan;
             if (!whole) return;
             [[fallthrough]];
         case Join::Stage::plan:
-            // (link() changed junction before - 2 on.) The block before them is planned again
-            // whatever its bounds: its exit was the end of the path's stop and is a corner now.
-            if (!replan_begin(std::min(j.lowest, j.before > 0 ? j.before - 1 : 0), j.plan)) return join_planned(true);
+            if (!replan_begin(joined_first(j.before, j.lowest), j.plan)) return join_planned(true);
             replan_forward(j.plan);
             j.stage = Join::Stage::check;
             if (!whole) return;

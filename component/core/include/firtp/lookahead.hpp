@@ -462,9 +462,6 @@ private:
     bool replan_run(Replan& r, bool undoable);  // from a forward pass on, to the end
     void replan_passed(const Replan& r);
     void replan_end(std::size_t from);
-    // The backward pass from the newest block, junctions up to `settled` settled before: the
-    // lowest segment whose bounds changed (the end flags follow as far as they change).
-    std::size_t bounds_from_end(std::size_t settled);
     // What add(at_update) or a join left, before a change of rate reads the plan.
     void plan_added() {
         finish_join();
@@ -485,7 +482,7 @@ private:
     // A check in two parts: its legs and their limits, then the corners (a join's, a few a period).
     // Indices as build_legs() made its arrays; `shift` segments have left the window since.
     struct CheckRun {
-        std::size_t from = 0, last = 0, legs = 0, next = 0, shift = 0;
+        std::size_t from = 0, last = 0, next = 0, shift = 0;
         double begin = 0.0, unchanged_until = 0.0;
         bool sharp = false, one_stage = false;
     };
@@ -550,12 +547,14 @@ private:
     // The segment at ring slot count_ joins the window as the newest block (add, rejoin).
     void join(Planning when);
     void link_newest();  // join's first half: counted and linked to the block before, not planned
-    // Blocks joined after the first `before` (one or a batch): the bounds from the new end (the
-    // junctions before before - 2 were settled; the lowest segment whose bounds changed), then the
-    // plan from there or the junction they joined on, whichever is first (as replan()).
-    std::size_t bounds_joined(std::size_t before) { return bounds_from_end(before >= 2 ? before - 2 : 0); }
-    bool replan_joined(std::size_t before, std::size_t lowest, bool undoable);
-    bool plan_joined(std::size_t before, bool undoable = false) { return replan_joined(before, bounds_joined(before), undoable); }
+    // Blocks joined after the first `before` (one or a batch): the backward pass from the new end
+    // (the junctions before before - 2 were settled), then the end flags of the junction it settles
+    // (settle_end_flags), then the plan from the lowest segment whose bounds changed or the
+    // junction they joined on, whichever is first (joined_first; as replan()).
+    Backward bounds_joined(std::size_t before) const { return {count_, count_ - 1, before >= 2 ? before - 2 : 0, count_}; }
+    void settle_end_flags();
+    static std::size_t joined_first(std::size_t before, std::size_t lowest);
+    bool plan_joined(std::size_t before, bool undoable = false);
     // What a plan changes beside the segments, for a batch's undo (plan_batch, rejoin_some).
     struct PlanScalars {
         std::size_t ramp_change = 0;
