@@ -537,3 +537,34 @@ TEST_P(BridgeRestart, TheNewBridgeTakesTheProgramAndTheControlOver) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bridge, BridgeRestart, testing::Values(0, 5));
+
+// The servo thread stalls while the new bridge starts (LinuxCNC under load: "USRMOT: ERROR:
+// command timeout"): the host's next block comes and the bridge polls before any period has been
+// read. It must not say program 0 then: a host whose program runs on takes a status naming
+// another program for a second as the component's restart, and gives its program up (the
+// linuxcnc_bridge restart test failed so, once in about 15 runs on a loaded machine). Nothing is
+// said until a period names the program; then the takeover goes on as above.
+TEST(BridgeRestart, SaysNoProgramBeforeItHasReadAPeriod) {
+    test::Chain chain(test::message_machine());
+    const int written = 2 * defaults::max_blocks + 8;
+    for (int seq = 1; seq <= written; ++seq) chain.publish(block_message(seq % 2, 0.01 * seq, 5, seq, seq));
+    chain.run(1);
+    const std::size_t statuses_before = chain.statuses.size();
+
+    chain.chain->restart_bridge(0);
+    chain.publish(block_message(0, 0.01 * (written + 1), 5, written + 1, written + 1));
+    for (int k = 0; k < 50; ++k) {  // the bridge's loop runs; the servo thread does not
+        while (chain.lcm->handleTimeout(0) > 0) {
+        }
+        chain.chain->poll();
+    }
+    while (chain.lcm->handleTimeout(0) > 0) {
+    }
+    for (std::size_t i = statuses_before; i < chain.statuses.size(); ++i)
+        EXPECT_EQ(chain.statuses[i].program, 5) << "status " << chain.statuses[i].seq << " before any period";
+
+    chain.run(20);  // the servo thread runs again
+    ASSERT_GT(chain.statuses.size(), statuses_before);
+    EXPECT_EQ(chain.status().program, 5);
+    for (std::size_t i = statuses_before; i < chain.statuses.size(); ++i) EXPECT_EQ(chain.statuses[i].program, 5);
+}

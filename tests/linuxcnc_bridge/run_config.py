@@ -153,6 +153,7 @@ def main():
     a = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
     if a.restart_bridge_at is not None:  # as a user would, from a shell beside the running LinuxCNC
         a.operator = ("sleep %g; (cd \"$CONFIG\" && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd unload "
+                      "firtp-lcm-bridge && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd waitusr "
                       "firtp-lcm-bridge && $AS_USER env HOME=\"$CONFIG\" PATH=\"$CONFIG/bin:$PATH\" halcmd -i \"$INI\" "
                       "-f lcm.hal) > \"$WORK/restart.log\" 2>&1; sleep 10; %s" % (a.restart_bridge_at, a.operator))
     for name in ("program", "bridge", "module", "states", "check_tool", "host", "plan", "dump", "replay"):
