@@ -63,7 +63,8 @@ std::string text(const firtp_lcm::block_t& m) {
 }
 
 std::string text(const firtp_lcm::status_t& m) {
-    return Line("status_t").field("seq", m.seq).field("next_seq", m.next_seq).field("state", state_name(m.state))
+    return Line("status_t").field("seq", m.seq).field("program", m.program).field("next_seq", m.next_seq)
+        .field("state", state_name(m.state))
         .field("queue", m.queue_depth).field("free", m.queue_free).field("error", m.error_code)
         .quoted(m.error_text).str();
 }

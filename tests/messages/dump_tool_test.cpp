@@ -61,6 +61,7 @@ protected:
 
         firtp_lcm::status_t status{};
         status.seq = 1;
+        status.program = 7;
         status.next_seq = 3;
         status.state = firtp_lcm::status_t::MOVING;
         status.queue_depth = 2;
@@ -106,9 +107,9 @@ TEST_F(DumpTool, OneLinePerEvent) {
     ASSERT_EQ(run.code, 0) << run.out;
     EXPECT_TRUE(contains(run.out, "1000 FIRTP_BLOCK block_t seq=1 program=7 line=40 target=(-2.5,-1,0.5) feed=25 "
                                   "tolerance=0.02\n")) << run.out;
-    EXPECT_TRUE(contains(run.out, " FIRTP_STATUS status_t seq=1 next_seq=3 state=moving queue=2 free=62 error=0\n"))
+    EXPECT_TRUE(contains(run.out, " FIRTP_STATUS status_t seq=1 program=7 next_seq=3 state=moving queue=2 free=62 error=0\n"))
         << run.out;
-    EXPECT_TRUE(contains(run.out, " FIRTP_STATUS status_t seq=2 next_seq=3 state=error queue=2 free=62 error=2 "
+    EXPECT_TRUE(contains(run.out, " FIRTP_STATUS status_t seq=2 program=7 next_seq=3 state=error queue=2 free=62 error=2 "
                                   "\"gap at 3\"\n")) << run.out;
     EXPECT_TRUE(contains(run.out, " FIRTP_AXIS_STATE_LIVE axis_state_t seq=5 tick=105 line=40 "
                                   "position=(1.5,-2,0.125) program=7 next_seq=6\n")) << run.out;
