@@ -54,8 +54,10 @@ int link_pin(const char* pin_name, const char* sig_name) {
   if (pin->dir == HAL_OUT && sig->bidirs > 0)
     return fail(-EINVAL, "signal '%s' already has I/O pins (cannot add output pin '%s')",
                 sig_name, pin_name);
-  if (sig->readers == 0 && sig->writers == 0 && sig->bidirs == 0)
-    copy_value(sig->type, sig->data, pin->dummy);  // first pin: its value seeds the signal
+  // As HAL's hal_link: the first pin that could drive the signal seeds it with its value (also an
+  // output pin joining a signal that only has readers, e.g. a bridge loaded again).
+  if ((pin->dir != HAL_IN || sig->readers == 0) && sig->writers == 0 && sig->bidirs == 0)
+    copy_value(sig->type, sig->data, pin->dummy);
   __atomic_store_n(pin->ptr_addr, static_cast<void*>(sig->data), __ATOMIC_RELEASE);
   pin->sig = sig;
   if (pin->dir == HAL_OUT) ++sig->writers;

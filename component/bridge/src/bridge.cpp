@@ -278,6 +278,10 @@ void Bridge::publish_reached() {
 
 void Bridge::on_control(const firtp_lcm::control_t* m) {
     if (m->session == control_session_ && m->seq <= control_seq_) return;  // older than what is in effect
+    if (taking_over_ && !period_seen_) {  // (it took 30, the old bridge's, as not its own)
+        if (!waiting_control_ || m->session != waiting_control_->session || m->seq > waiting_control_->seq) waiting_control_ = *m;
+        return;
+    }
     control_session_ = m->session;  // a new host starts its own count
     control_seq_ = m->seq;
     if (!std::isfinite(m->feed_scale) || m->feed_scale < 0.0) {
@@ -441,6 +445,11 @@ void Bridge::publish_status() {
 
 void Bridge::poll() {
     forward_states();
+    if (waiting_control_ && period_seen_) {
+        const firtp_lcm::control_t control = *waiting_control_;
+        waiting_control_.reset();
+        on_control(&control);
+    }
     publish_reached();
     if (status_due_) publish_status();
 }

@@ -108,11 +108,11 @@ void InProcessComponent::net_bridge() {
     }
 }
 
-void InProcessComponent::restart_bridge(int periods_between) {
+void InProcessComponent::restart_bridge(int periods_between, bool net_at_once) {
     bridge_.reset();
     for (int k = 0; k < periods_between; ++k) step();
     bridge_ = std::make_unique<Bridge>(*lcm_, bridge_options_);
-    net_bridge();
+    if (net_at_once) net_bridge();
 }
 
 InProcessComponent::~InProcessComponent() {

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 
 namespace firtp {
@@ -109,6 +110,11 @@ private:
     std::deque<ControlTaken> controls_taken_;
     ControlTaken applied_control_;  // named by the latest axis state
     bool unknown_gen_reported_ = false;
+    // Taking over, a control that came before the first period was read: the generation in effect
+    // is only known from a period (before lcm.hal's nets the pin reads its own 0; netting drives
+    // that onto the signal, while the periods waiting name the old bridge's). It is taken after
+    // that period. (A fresh start takes it at once, as logs recorded so replay.)
+    std::optional<firtp_lcm::control_t> waiting_control_;
     // A bridge started again under a running component (firtp-lcm-bridge restarted while firtp.so
     // runs on) takes over what the one before left: the control generation in effect (it counts on
     // from it and names those levels control 0, without an error), and the component's program and

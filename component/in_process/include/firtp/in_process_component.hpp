@@ -51,7 +51,10 @@ public:
     // The bridge unloaded and loaded again while firtp.so runs on (in LinuxCNC: halcmd unload
     // firtp-lcm-bridge, then lcm.hal again): its pins leave their signals, which keep their
     // values, and the new bridge's join them; firtp.so runs `periods_between` periods alone.
-    void restart_bridge(int periods_between = 0);
+    // net_at_once false: the new bridge's pins stay apart until net_bridge() (lcm.hal's net lines
+    // run after loadusr -W, while the bridge already takes messages).
+    void restart_bridge(int periods_between = 0, bool net_at_once = true);
+    void net_bridge();
     void step();   // one servo period in this thread (deterministic, no clock)
     void start();  // or: the servo thread on the real-time clock
     void poll();   // the bridge's non-real-time work: axis states and status out
@@ -60,7 +63,6 @@ public:
     long update_time_ns() const;
 
 private:
-    void net_bridge();
     lcm::LCM* lcm_;
     BridgeOptions bridge_options_;
     std::unique_ptr<Bridge> bridge_;
