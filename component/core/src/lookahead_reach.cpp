@@ -184,6 +184,11 @@ void Lookahead::join_step(bool whole) {
             break;
     }
     if (checked == Checked::corners) return;
+#ifdef FIRTP_FORCE_UNDO
+    // Test builds only (tests/core: core_forced_undo_tests): every spread join that passed while
+    // steps froze is undone as if no plan had passed, so the randomized suites run the rare undo.
+    if (checked == Checked::passed && j.undoable && j.froze) return join_planned(false);
+#endif
     if (checked == Checked::passed) {
         replan_passed(j.plan);
         replan_end(j.plan.from);
