@@ -408,13 +408,14 @@ void Bridge::forward_states() {
 }
 
 void Bridge::publish_status() {
-    // Taking over a running program: nothing said until the pins are netted and the program known
-    // (an unnetted pin reads 0: idle, an empty queue, as if the program were done).
-    if (taking_over_ && !sequence_taken_over_ && (!period_seen_ || reported_program_ != 0)) return;
-    // Nor before the first period is read, where the program is the component's: program 0 then
-    // is not known, not "none". (A servo thread stalled while this bridge started, and the host
-    // took a second of statuses naming program 0 for the component's restart.)
+    // Nothing said before the program is known. Before the first period is read, where the program
+    // is the component's, 0 is not known, not "none" (a servo thread stalled while this bridge
+    // started, and the host took a second of statuses naming program 0 for the component's
+    // restart). Taking over a running program (reported_program_: a period named it), not until
+    // the pins are netted and the sequence taken over (an unnetted pin reads 0: idle, an empty
+    // queue, as if the program were done).
     if (streams_->has_states && !period_seen_ && sequence_.program() == 0) return;
+    if (taking_over_ && !sequence_taken_over_ && reported_program_ != 0) return;
     firtp_lcm::status_t s;
     s.utime = messages::now_utime();
     s.seq = ++status_seq_;
