@@ -106,6 +106,7 @@ void Lookahead::reset(const AxisVector& position) {
     frozen_ = Frozen{};
     finished_ = false;
     deferred_ = 0;
+    filling_ = false;
     waiting_since_ = -1;
     pending_dwell_ = 0.0;
 }
@@ -1024,8 +1025,15 @@ Result Lookahead::add(const Block& block, Planning when) {
     goal_ = block.target;
     finished_ = false;
     // Beyond the window's reach it waits; so does a block while a join is under way or after one
-    // planned in this period (one a period).
+    // planned in this period (one a period), and one that comes under way to a window still
+    // filling (gathered: lookahead_reach.cpp).
     if (deferred_ > 0 || join_.open || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()))) {
+        seg(count_ + deferred_) = s;
+        ++deferred_;
+        return Result::ok;
+    }
+    if (when == Planning::now && fills_under_way()) {
+        filling_ = true;
         seg(count_ + deferred_) = s;
         ++deferred_;
         return Result::ok;

@@ -85,8 +85,13 @@ Lookahead::NextStep Lookahead::next_step() const {
 
 bool Lookahead::final_for_start() const {
     // A window with blocks waiting beyond its reach (deferred_) is as long as a plan needs, as a
-    // full one is.
+    // full one is; one still filling is not.
+    if (filling_ && deferred_ > 0) return front_final();
     if (finished_ || deferred_ > 0 || count_ >= capacity_) return true;
+    return front_final();
+}
+
+bool Lookahead::front_final() const {
     if (seg(0).exit_end_limited) return false;
     if (count_ >= 2 && seg(0).kind == Kind::dense && seg(1).entry_end_limited) return false;
     // A run of dense blocks keeps one speed a block: a slow junction further on can slow it more
@@ -313,6 +318,12 @@ void Lookahead::commit() {
         // flags a start asks for (final_for_start).
         if (join_.open && (next_is_start_ || join_front() < join_split_from)) {
             finish_join();
+            continue;
+        }
+        // Gathered blocks and their join, while the front still depends on the stop at the
+        // window's end: at once, as the blocks would have joined as they came.
+        if (filling_ && (deferred_ > 0 || join_.open) && !next_is_start_ && !front_final()) {
+            join_gathered();
             continue;
         }
         if (next_is_start_) {

@@ -20,6 +20,16 @@
 // The stop at the window's end then lies beyond anything the motion commits to before more blocks
 // join, so the motion is that of the whole queue planned, but where a check lowered a corner for a
 // path that ended elsewhere (tests/core/reach_test.cpp).
+//
+// - A window still filling under way (LinuxCNC hands firtp_tp one block a servo period; on 0.35 mm
+//   chords at 300 mm/s the motion uses them about as fast, so the window never reaches that far)
+//   gathers its blocks the same way: from min_window blocks on, a block added under way waits, and
+//   the waiting ones join as one batch, spread over periods, once there are as many as a join's
+//   bounds change blocks back or they have waited gather_periods. Where the front's next step still
+//   depends on the stop at the window's end (front_final), they join at once before it freezes,
+//   as they did when each was planned as it came: the motion is the same (tests/core/arrival_test.cpp).
+//   firtp_worst_period --per-period 1 --with-adds --feed 300 --laps 2: periods over 50 us 371 ->
+//   194, planning 43.1 -> 26.3 ms (docs/BENCHMARKS.md).
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
@@ -47,6 +57,11 @@ constexpr std::size_t batch_window_most = 512;
 // or corners measured, a step.
 constexpr std::size_t bounds_a_step = 16;
 constexpr std::size_t corners_a_step = 16;
+// A window still filling: from gather_from blocks on (from 4, seed 2 program 100 of
+// tests/core/arrival_test.cpp fed two a period ran 6e-6 mm off the whole program's samples), a
+// block waits at most gather_periods for others to join with.
+constexpr std::size_t gather_from = min_window;
+constexpr std::int64_t gather_periods = 8;
 
 }  // namespace
 
@@ -69,12 +84,14 @@ bool Lookahead::waits_beyond() {
     const std::size_t h = horizon();
     if (h + rejoin_batch > count_) return false;
     keep_ = h;
+    filling_ = false;
     return true;
 }
 
 void Lookahead::defer_beyond(std::size_t keep) {
     if (keep == 0 || keep >= count_) return;
     keep_ = keep;
+    filling_ = false;
     deferred_ += count_ - keep;
     count_ = keep;
     // The last block kept ends the known path, as it did when it came (add): a stop after it.
@@ -110,13 +127,23 @@ void Lookahead::rejoin_some() {
     if (++rejoin_clock_ % horizon_every == 0 || count_ == 0) {
         const std::size_t h = horizon();
         keep_ = h < count_ ? h : count_ + horizon_growth;
+        filling_ = filling_ && h >= count_;
     }
-    if (count_ >= keep_) return;
-    const std::size_t before = count_;
+    if (count_ >= keep_ && !filling_) return;
+    if (gathers()) return;
+    const std::size_t n = rejoin_count();
+    join_waiting(n, !(n > 1 && frozen_.moving));
+}
+
+std::size_t Lookahead::rejoin_count() const {
     // (Held, or a change to try again: one at a time, as the hold's stop and the change's snapshot
     // expect.)
-    const bool batch = !held_ && !retry_ && before <= batch_window_most;
-    const std::size_t n = std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
+    const bool batch = !held_ && !retry_ && count_ <= batch_window_most;
+    return std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
+}
+
+void Lookahead::join_waiting(std::size_t n, bool whole) {
+    const std::size_t before = count_;
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
         undo_ = plan_scalars();
@@ -129,7 +156,23 @@ void Lookahead::rejoin_some() {
     join_.open = true, join_.undoable = n > 1, join_.done = done;
     join_.before = before;
     join_.bounds = bounds_joined(before);
-    join_step(!(n > 1 && frozen_.moving));
+    join_step(whole);
+}
+
+bool Lookahead::fills_under_way() const {
+    return frozen_.moving && !held_ && !retry_ && count_ >= gather_from && count_ <= batch_window_most;
+}
+
+bool Lookahead::gathers() const {
+    if (!filling_ || !frozen_.moving || held_ || retry_ || finished_ || count_ < gather_from || count_ > batch_window_most) return false;
+    const std::size_t wanted = std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch);
+    const double waited = static_cast<double>(timeline_->now()) * parameters_.period - seg(count_).added;
+    return deferred_ < wanted && waited < static_cast<double>(gather_periods) * parameters_.period;
+}
+
+void Lookahead::join_gathered() {
+    finish_join();
+    while (deferred_ > 0) join_waiting(rejoin_count(), true);
 }
 
 std::size_t Lookahead::join_front() const {

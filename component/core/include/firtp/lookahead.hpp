@@ -435,6 +435,7 @@ private:
     double on_tick_grid(double t) const;  // the first sample at or after t (s from now)
     NextStep next_step() const;
     bool final_for_start() const;
+    bool front_final() const;  // the front's next steps no longer depend on the end of the known path
     void freeze(const NextStep& next);
     void freeze_overlap(const NextStep& next, std::int64_t tick, double offset);  // both steps of an overlapped corner
     // `step`, centred at tick * period + offset, is the frozen one; the leg after it at `speed`.
@@ -518,6 +519,14 @@ private:
     void defer_beyond(std::size_t keep);  // a change of rate: the blocks after `keep` wait
     void take_waiting();          // the first waiting block, as it came, at ring slot count_
     void rejoin_some();           // at each commit
+    std::size_t rejoin_count() const;  // how many waiting blocks join next
+    void join_waiting(std::size_t n, bool whole);  // the first n waiting blocks join (whole: at once)
+    // A window still filling under way (blocks come about as fast as the motion uses them): a block
+    // waits (filling_) and joins with others in a batch spread over periods, unless the front's
+    // next step still depends on the stop at the window's end (front_final(): then at once).
+    bool fills_under_way() const;
+    bool gathers() const;      // rejoin_some(): the waiting blocks wait for more
+    void join_gathered();      // every waiting block joins now, whole
     // A join over several periods (lookahead_reach.cpp), one step a commit: the bounds a few
     // junctions at a time, the forward pass, the check's legs and limits, its corners a few at a
     // time; a batch's, while the motion is under way. Steps freeze meanwhile, before the blocks the
@@ -613,6 +622,7 @@ private:
     std::size_t count_ = 0;
     std::size_t deferred_ = 0;  // after the window, in ring order: blocks beyond its reach
     std::size_t keep_ = 0;      // the window's reach: waiting blocks join while it holds fewer
+    bool filling_ = false;      // blocks wait though the window is short of it (fills_under_way)
     std::uint32_t rejoin_clock_ = 0;  // commits with blocks waiting: the reach is measured every few
     std::uint32_t add_clock_ = 0;     // adds without: likewise
     std::size_t tail_ = 1;  // blocks before the last to join whose bounds that join changed (+ 1)
