@@ -8,6 +8,7 @@
 // start froze at a speed the whole program's checks had lowered). Seeds 1-20 at 1 and 2 blocks a
 // period give the same samples on every other program. Other seeds:
 //   FIRTP_RANDOM_SEED=8 core_tests --gtest_filter='Arrival.*'
+#include "support/chords.hpp"
 #include "support/random_machine.hpp"
 
 #include <firtp/planner.hpp>
@@ -26,6 +27,7 @@ namespace {
 struct Fed {
     std::vector<AxisState> samples;
     bool lowered = false;
+    PlannerStats stats;
 };
 
 Fed fed_per_period(const PlannerParameters& p, const std::vector<Block>& blocks, int per_period) {
@@ -46,6 +48,7 @@ Fed fed_per_period(const PlannerParameters& p, const std::vector<Block>& blocks,
         if (out.size() > 20'000'000) break;
     }
     run.lowered = planner.stats().checks_failed > 0;
+    run.stats = planner.stats();
     return run;
 }
 
@@ -129,6 +132,33 @@ TEST(Arrival, BlocksFedOneOrTwoAPeriodGiveTheSamplesOfTheWholeProgram) {
     if (const char* seed = std::getenv("FIRTP_RANDOM_SEED")) seeds = {std::strtoull(seed, nullptr, 10)};
     for (std::uint64_t seed : seeds)
         for (int per_period : {1, 2}) EXPECT_GT(compare_fed_and_whole(seed, per_period), 100) << "seed " << seed << ", " << per_period << " a period";
+}
+
+// LinuxCNC's feed on a dense path: one block a period, used about as fast as it comes, so the window
+// fills for the whole program and its blocks wait and join in batches (lookahead_reach.cpp,
+// fills_under_way). The motion is still the whole program's, sample for sample, and keeps its
+// limits and tolerances.
+TEST(Arrival, ChordsFedOneAPeriodJoinInBatchesAndGiveTheSamplesOfTheWholeProgram) {
+    PlannerParameters machine = test::deep_queue_machine();
+    machine.max_rate = 1.0;  // (as examples/linuxcnc: MAX_FEED_OVERRIDE 1.0)
+    const std::vector<Block> program = test::helix_chords(1080);
+    const Fed whole = fed_per_period(machine, program, static_cast<int>(program.size()));
+    const Fed fed = fed_per_period(machine, program, 1);
+    ASSERT_FALSE(whole.lowered || fed.lowered);
+    EXPECT_GT(fed.stats.gathered, 100u) << "blocks came to a window still filling, waited and joined in batches";
+    const std::vector<Moving> want = moving_stretches(whole.samples), got = moving_stretches(fed.samples);
+    ASSERT_EQ(want.size(), 1u);
+    ASSERT_EQ(got.size(), 1u);
+    ASSERT_EQ(got[0].end - got[0].begin, want[0].end - want[0].begin) << "ticks of motion";
+    const std::size_t late = got[0].begin - want[0].begin;
+    double off = 0.0;
+    for (std::size_t k = want[0].begin; k < want[0].end; ++k)
+        off = std::max(off, (fed.samples[k + late].position - whole.samples[k].position).cwiseAbs().maxCoeff());
+    EXPECT_LT(off, 1e-9 * 40.0);
+    test::RateRun r;
+    r.samples = fed.samples;
+    r.ended = true;  // (fed_per_period runs to rest; expect_within checks it did)
+    test::expect_within(r, program, machine);
 }
 
 }  // namespace

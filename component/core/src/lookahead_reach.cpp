@@ -120,6 +120,7 @@ void Lookahead::take_waiting() {
     s = fresh;
     --deferred_;
     ++stats_.rejoined;
+    if (filling_) ++stats_.gathered;
 }
 
 void Lookahead::rejoin_some() {
@@ -256,6 +257,7 @@ void Lookahead::join_planned(bool planned) {
     for (std::size_t i = 0; i < before; ++i) seg(i) = snapshot_[i + join_.pops];
     deferred_ += count_ - before;
     stats_.rejoined -= count_ - before;
+    if (filling_) stats_.gathered -= std::min<std::uint64_t>(stats_.gathered, count_ - before);
     count_ = before;
     PlanScalars undo = undo_;
     if (undo.ramp_change != static_cast<std::size_t>(-1)) undo.ramp_change = undo.ramp_change > join_.pops ? undo.ramp_change - join_.pops : 0;
