@@ -23,15 +23,17 @@ struct RateRun {
     PlannerStats stats;  // the planner's, at the end
 };
 
-// Events (tick, rate): 0 holds, a rate again resumes, < 0 aborts. At most `max_ticks` periods.
+// Events (tick, rate): 0 holds, a rate again resumes, < 0 aborts. At most `max_ticks` periods;
+// at most `per_period` blocks added before each (as many as the window takes by default).
 inline RateRun run_with_rates(const PlannerParameters& p, const std::vector<Block>& blocks,
-                              const std::vector<std::pair<int, double>>& events, std::int64_t max_ticks = 20'000'000) {
+                              const std::vector<std::pair<int, double>>& events, std::int64_t max_ticks = 20'000'000,
+                              std::size_t per_period = static_cast<std::size_t>(-1)) {
     Planner planner(p, AxisVector::Zero());
     RateRun r;
     std::size_t next = 0, event = 0;
     int stopping_since = -1;
     for (int k = 0; k < max_ticks; ++k) {
-        for (; next < blocks.size(); ++next) {
+        for (std::size_t added = 0; next < blocks.size() && added < per_period; ++next, ++added) {
             const Result result = planner.add(blocks[next]);
             if (result == Result::queue_full) break;
             EXPECT_TRUE(result == Result::ok || result == Result::skipped) << static_cast<int>(result);
