@@ -33,7 +33,10 @@
 // Only the blocks the motion can reach soon are planned: a change of rate (override, hold, resume)
 // plans those again, and the others, with blocks added to a window that already reaches that far,
 // wait beyond it and join it in batches as the motion uses it up (lookahead_reach.cpp). Neither a
-// change's cost nor an add's grows with the queue or with the stop at the end of the path.
+// change's cost nor an add's grows with the queue or with the stop at the end of the path. Blocks
+// that come under way to a window still short of that reach (one a period, as LinuxCNC sends
+// them) wait and join in batches too, but join at once where the next step to freeze still depends
+// on the stop at the window's end.
 #pragma once
 
 #include <firtp/junction.hpp>
