@@ -29,7 +29,7 @@
 //   depends on the stop at the window's end (front_final), they join at once before it freezes,
 //   as they did when each was planned as it came: the motion is the same (tests/core/arrival_test.cpp).
 //   firtp_worst_period --per-period 1 --with-adds --feed 300 --laps 2: periods over 50 us 371 ->
-//   194, planning 43.1 -> 26.3 ms (docs/BENCHMARKS.md).
+//   194, planning 43.2 -> 26.2 ms, the worst 160 -> 168 us (docs/BENCHMARKS.md).
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
