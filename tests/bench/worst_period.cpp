@@ -6,7 +6,8 @@
 // to the window in batches (lookahead_reach.cpp). --with-adds times the adds too, as part of their
 // period: with --per-period 1 that is LinuxCNC feeding firtp_tp one block a servo period, a window
 // that may never reach that far (the path used about as fast as it comes). Planning is
-// deterministic, so period k does the same work in every run; each period's least thread-CPU time over --repeat runs is its own cost.
+// deterministic, so period k does the same work in every run; each period's least thread-CPU time
+// over --repeat runs is its own cost.
 // Prints their p99, p999 and max, how many exceed 50 us (issue 13's worst), and the sum.
 //
 //   firtp_worst_period [--jerk 1e5] [--feed 250] [--laps 6] [--repeat 5] [--per-period 8] [--with-adds]

@@ -27,7 +27,6 @@ namespace {
 struct Fed {
     std::vector<AxisState> samples;
     bool lowered = false;
-    PlannerStats stats;
 };
 
 Fed fed_per_period(const PlannerParameters& p, const std::vector<Block>& blocks, int per_period) {
@@ -48,7 +47,6 @@ Fed fed_per_period(const PlannerParameters& p, const std::vector<Block>& blocks,
         if (out.size() > 20'000'000) break;
     }
     run.lowered = planner.stats().checks_failed > 0;
-    run.stats = planner.stats();
     return run;
 }
 
@@ -142,9 +140,9 @@ TEST(Arrival, ChordsFedOneAPeriodJoinInBatchesAndGiveTheSamplesOfTheWholeProgram
     PlannerParameters machine = test::deep_queue_machine();
     machine.max_rate = 1.0;  // (as examples/linuxcnc: MAX_FEED_OVERRIDE 1.0)
     const std::vector<Block> program = test::helix_chords(1080);
-    const Fed whole = fed_per_period(machine, program, static_cast<int>(program.size()));
-    const Fed fed = fed_per_period(machine, program, 1);
-    ASSERT_FALSE(whole.lowered || fed.lowered);
+    const test::RateRun whole = test::run_with_rates(machine, program, {}, test::run_ticks(machine));
+    const test::RateRun fed = test::run_with_rates(machine, program, {}, test::run_ticks(machine), 1);
+    ASSERT_EQ(whole.stats.checks_failed + fed.stats.checks_failed, 0u);
     EXPECT_GT(fed.stats.gathered, 100u) << "blocks came to a window still filling, waited and joined in batches";
     const std::vector<Moving> want = moving_stretches(whole.samples), got = moving_stretches(fed.samples);
     ASSERT_EQ(want.size(), 1u);
@@ -155,10 +153,7 @@ TEST(Arrival, ChordsFedOneAPeriodJoinInBatchesAndGiveTheSamplesOfTheWholeProgram
     for (std::size_t k = want[0].begin; k < want[0].end; ++k)
         off = std::max(off, (fed.samples[k + late].position - whole.samples[k].position).cwiseAbs().maxCoeff());
     EXPECT_LT(off, 1e-9 * 40.0);
-    test::RateRun r;
-    r.samples = fed.samples;
-    r.ended = true;  // (fed_per_period runs to rest; expect_within checks it did)
-    test::expect_within(r, program, machine);
+    test::expect_within(fed, program, machine);
 }
 
 }  // namespace

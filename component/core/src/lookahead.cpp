@@ -1027,13 +1027,9 @@ Result Lookahead::add(const Block& block, Planning when) {
     // Beyond the window's reach it waits; so does a block while a join is under way or after one
     // planned in this period (one a period), and one that comes under way to a window still
     // filling (gathered: lookahead_reach.cpp).
-    if (deferred_ > 0 || join_.open || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()))) {
-        seg(count_ + deferred_) = s;
-        ++deferred_;
-        return Result::ok;
-    }
-    if (when == Planning::now && fills_under_way()) {
-        filling_ = true;
+    bool waits = deferred_ > 0 || join_.open || (when == Planning::now && (join_.done == timeline_->now() || waits_beyond()));
+    if (!waits && when == Planning::now && fills_under_way()) waits = filling_ = true;
+    if (waits) {
         seg(count_ + deferred_) = s;
         ++deferred_;
         return Result::ok;

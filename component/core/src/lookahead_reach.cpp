@@ -136,11 +136,13 @@ void Lookahead::rejoin_some() {
     join_waiting(n, !(n > 1 && frozen_.moving));
 }
 
+std::size_t Lookahead::batch_size() const { return std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch); }
+
 std::size_t Lookahead::rejoin_count() const {
     // (Held, or a change to try again: one at a time, as the hold's stop and the change's snapshot
     // expect.)
     const bool batch = !held_ && !retry_ && count_ <= batch_window_most;
-    return std::min(deferred_, batch ? std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch) : std::size_t{1});
+    return std::min(deferred_, batch ? batch_size() : std::size_t{1});
 }
 
 void Lookahead::join_waiting(std::size_t n, bool whole) {
@@ -165,10 +167,9 @@ bool Lookahead::fills_under_way() const {
 }
 
 bool Lookahead::gathers() const {
-    if (!filling_ || !frozen_.moving || held_ || retry_ || finished_ || count_ < gather_from || count_ > batch_window_most) return false;
-    const std::size_t wanted = std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch);
+    if (!filling_ || finished_ || !fills_under_way()) return false;
     const double waited = static_cast<double>(timeline_->now()) * parameters_.period - seg(count_).added;
-    return deferred_ < wanted && waited < static_cast<double>(gather_periods) * parameters_.period;
+    return deferred_ < batch_size() && waited < static_cast<double>(gather_periods) * parameters_.period;
 }
 
 void Lookahead::join_gathered() {

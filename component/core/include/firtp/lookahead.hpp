@@ -522,6 +522,7 @@ private:
     void defer_beyond(std::size_t keep);  // a change of rate: the blocks after `keep` wait
     void take_waiting();          // the first waiting block, as it came, at ring slot count_
     void rejoin_some();           // at each commit
+    std::size_t batch_size() const;    // a batch's blocks: one more than the last join re-planned before them
     std::size_t rejoin_count() const;  // how many waiting blocks join next
     void join_waiting(std::size_t n, bool whole);  // the first n waiting blocks join (whole: at once)
     // A window still filling under way (blocks come about as fast as the motion uses them): a block
