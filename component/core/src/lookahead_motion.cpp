@@ -317,13 +317,8 @@ void Lookahead::commit() {
         // A join's next step would change what this freeze reads or leaves near the front, or the
         // flags a start asks for (final_for_start).
         if (join_.open && (next_is_start_ || join_front() < join_split_from)) {
+            ++stats_.joins_hurried;
             finish_join();
-            continue;
-        }
-        // Gathered blocks and their join, while the front still depends on the stop at the
-        // window's end: at once, as the blocks would have joined as they came.
-        if (filling_ && (deferred_ > 0 || join_.open) && !next_is_start_ && !front_final()) {
-            join_gathered();
             continue;
         }
         if (next_is_start_) {

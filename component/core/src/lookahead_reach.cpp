@@ -25,11 +25,13 @@
 //   chords at 300 mm/s the motion uses them about as fast, so the window never reaches that far)
 //   gathers its blocks the same way: from min_window blocks on, a block added under way waits, and
 //   the waiting ones join as one batch, spread over periods, once there are as many as a join's
-//   bounds change blocks back or they have waited gather_periods. Where the front's next step still
-//   depends on the stop at the window's end (front_final), they join at once before it freezes,
-//   as they did when each was planned as it came: the motion is the same (tests/core/arrival_test.cpp).
-//   firtp_worst_period --per-period 1 --with-adds --feed 300 --laps 2: periods over 50 us 371 ->
-//   194, planning 43.2 -> 26.2 ms, the worst 160 -> 168 us (docs/BENCHMARKS.md).
+//   bounds change blocks back or they have waited gather_periods. Steps freeze meanwhile, against
+//   the stop at the end of the blocks joined so far: a checked plan, as one with fewer blocks
+//   known. Joining them at once wherever the front's bounds came from that stop (front_final)
+//   did so before nearly every freeze and cost 130-170 us a period at jerk 1e5: on the chords
+//   and the random programs of tests/core/arrival_test.cpp the motion is the same without it.
+//   firtp_worst_period --per-period 1 --with-adds --feed 300 --laps 2: periods over 50 us under
+//   way 347 -> 171 -> 6, planning 43.2 -> 26.2 -> 12.4 ms (docs/BENCHMARKS.md).
 #include <firtp/lookahead.hpp>
 
 #include <algorithm>
@@ -170,11 +172,6 @@ bool Lookahead::gathers() const {
     if (!filling_ || finished_ || !fills_under_way()) return false;
     const double waited = static_cast<double>(timeline_->now()) * parameters_.period - seg(count_).added;
     return deferred_ < batch_size() && waited < static_cast<double>(gather_periods) * parameters_.period;
-}
-
-void Lookahead::join_gathered() {
-    finish_join();
-    while (deferred_ > 0) join_waiting(rejoin_count(), true);
 }
 
 std::size_t Lookahead::join_front() const {

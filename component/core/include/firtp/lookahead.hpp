@@ -35,8 +35,7 @@
 // wait beyond it and join it in batches as the motion uses it up (lookahead_reach.cpp). Neither a
 // change's cost nor an add's grows with the queue or with the stop at the end of the path. Blocks
 // that come under way to a window still short of that reach (one a period, as LinuxCNC sends
-// them) wait and join in batches too, but join at once where the next step to freeze still depends
-// on the stop at the window's end.
+// them) wait and join in batches too.
 #pragma once
 
 #include <firtp/junction.hpp>
@@ -526,11 +525,9 @@ private:
     std::size_t rejoin_count() const;  // how many waiting blocks join next
     void join_waiting(std::size_t n, bool whole);  // the first n waiting blocks join (whole: at once)
     // A window still filling under way (blocks come about as fast as the motion uses them): a block
-    // waits (filling_) and joins with others in a batch spread over periods, unless the front's
-    // next step still depends on the stop at the window's end (front_final(): then at once).
+    // waits (filling_) and joins with others in a batch spread over periods.
     bool fills_under_way() const;
     bool gathers() const;      // rejoin_some(): the waiting blocks wait for more
-    void join_gathered();      // every waiting block joins now, whole
     // A join over several periods (lookahead_reach.cpp), one step a commit: the bounds a few
     // junctions at a time, the forward pass, the check's legs and limits, its corners a few at a
     // time; a batch's, while the motion is under way. Steps freeze meanwhile, before the blocks the

@@ -49,6 +49,7 @@ struct PlannerStats {
     std::uint64_t rejoined = 0;       // blocks that waited beyond the window's reach and joined it
     std::uint64_t gathered = 0;       // ... of them, joining a window still filling under way (fills_under_way)
     std::uint64_t join_steps = 0;     // steps of such joins taken in a later period than the join's first
+    std::uint64_t joins_hurried = 0;  // ... joins finished at once: a freeze or a start came near what they change
     std::uint64_t overlapped = 0;     // corners passed with the blocks' pulses overlapping (Tk > 0, two steps)
 };
 
