@@ -42,9 +42,10 @@ std::vector<AxisState> added_one_by_one(const PlannerParameters& p, const std::v
 }
 
 // Random programs that fit the window, so plan_trajectory adds each as one batch; of the 1,000 of
-// seeds 1-10 these three are among the 52 whose batch was undone.
+// seeds 1-10 these three are among the 21 whose batch was undone. (Seed 1 program 27 was one until
+// a dense run's jerk stage came from the axes moving in it.)
 TEST(BatchPlanning, AnUndoneBatchGivesTheSamplesOfItsBlocksAddedOneByOne) {
-    for (const auto& [seed, program] : {std::pair{1, 27}, std::pair{1, 38}, std::pair{2, 44}}) {
+    for (const auto& [seed, program] : {std::pair{1, 38}, std::pair{1, 42}, std::pair{2, 44}}) {
         const test::RandomCase c = random_case(seed, program);
         ASSERT_LT(c.blocks.size(), c.parameters.queue_capacity);
         const Trajectory batch = plan_trajectory(c.parameters, AxisVector::Zero(), c.blocks);

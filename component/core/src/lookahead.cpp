@@ -113,23 +113,42 @@ void Lookahead::reset(const AxisVector& position) {
 
 // ---- Regimes and steps -------------------------------------------------------------------------
 
-Lookahead::Regime Lookahead::dense_regime(double epsilon) const {
-    if (epsilon == regime_epsilon_) return regime_answer_;
-    regime_epsilon_ = epsilon;
-    Regime& r = regime_answer_;
-    r = sparse_;
+Lookahead::Regime Lookahead::dense_regime(double epsilon, const AxisVector& along) const {
+    if (!(epsilon == regime_epsilon_)) {
+        regime_epsilon_ = epsilon;
+        regime_h_ = AxisVector::Zero();
+        regime_all_ = 0;
+        for (int i = 0; i < limits_.axes; ++i) {
+            const AxisLimits& l = limits_.axis[i];
+            if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
+            // Without a tolerance the swing from -h to +h needs no more than the sparse jerk time.
+            regime_h_[i] = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
+                                                  : 0.5 * l.max_acceleration;
+            regime_all_ |= 1u << i;
+        }
+        regime_mask_ = ~0u;
+        regime_wide_ = axes_regime(regime_all_);
+    }
+    unsigned mask = 0;
+    for (int i = 0; i < limits_.axes; ++i)
+        if (along[i] != 0.0) mask |= 1u << i;
+    mask &= regime_all_;
+    // (Nothing along it limits jerk: the stage of every axis.)
+    if (mask == regime_all_ || mask == 0) return regime_wide_;
+    if (mask != regime_mask_) regime_mask_ = mask, regime_answer_ = axes_regime(mask);
+    return regime_answer_;
+}
+
+Lookahead::Regime Lookahead::axes_regime(unsigned mask) const {
+    Regime r = sparse_;
     r.sparse = false;
     if (!(rules_.t2 > 0.0)) return r;
     r.t2 = 0.0;
-    for (int i = 0; i < limits_.axes; ++i) {
-        const AxisLimits& l = limits_.axis[i];
-        if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
-        // Without a tolerance the swing from -h to +h needs no more than the sparse jerk time.
-        const double h = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
-                                                : 0.5 * l.max_acceleration;
-        r.cap[i] = h;
-        r.t2 = std::max(r.t2, 2.0 * h / l.max_jerk);
-    }
+    for (int i = 0; i < limits_.axes; ++i)
+        if (mask & (1u << i)) r.t2 = std::max(r.t2, 2.0 * regime_h_[i] / limits_.axis[i].max_jerk);
+    // Every axis keeps its jerk in that stage, those that do not move along it too.
+    for (int i = 0; i < limits_.axes; ++i)
+        if (regime_h_[i] > 0.0) r.cap[i] = std::min(regime_h_[i], 0.5 * limits_.axis[i].max_jerk * r.t2);
     return r;
 }
 
@@ -290,7 +309,7 @@ double Lookahead::sampled_speed(double alpha, double t2, double s, double du, do
 // tolerance for the step itself (lookahead.hpp, Regime).
 double Lookahead::dense_estimate(std::size_t i) const {
     double v = seg(i).feed_max;
-    const Regime own = dense_regime(seg(i).tolerance);
+    const Regime own = dense_regime(seg(i).tolerance, seg(i).u);
     for (std::size_t j : {i - 1, i}) {
         if (j >= i + 1 || j + 1 >= count_ || seg(j).kind == Kind::stop) continue;  // (i - 1 wraps for i = 0)
         const std::size_t k = j == i ? i + 1 : j;  // the neighbour across junction j
@@ -316,8 +335,11 @@ void Lookahead::classify(std::size_t i) {
     const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || (smooth(i) && !slower_long(i + 1, i));
     // Dense: inside one dense kernel at its feed (several blocks share a window); a longer block
     // held at one speed would crawl through its whole length behind a slow junction.
-    const Regime dense = dense_regime(s.tolerance);
-    const bool in_window = s.length < s.feed_max * (dense.t2 + s.feed_max * box(s.u, dense));
+    const Regime dense = dense_regime(s.tolerance, s.u);
+    // (Judged in the stage of every axis: in its own, narrower, a block leaves the window for the
+    // sparse class, whose T2 is every axis' too: firtp_cliffs seed 7 program 160, 2.5x slower.)
+    const Regime wide = dense_regime(s.tolerance, AxisVector::Ones());
+    const bool in_window = s.length < s.feed_max * (wide.t2 + s.feed_max * box(s.u, wide));
     // Between two stops a sized start and stop are the fastest plan there is, the jerk-limited
     // rest-to-rest move. (At the end of the blocks known so far too: the next block classifies it
     // again, and a start waits for the junction after its block to be settled.)
@@ -363,7 +385,7 @@ void Lookahead::set_junction(std::size_t i) {
         // Between sparse blocks the corner may take its tolerance's regime (a tight tolerance on a
         // machine with a long T2), the ramps beside it sharing it, where that pays (tight_pays).
         if (s.junction.sparse && !s.dense && !n.dense && s.corner_cap < std::max(s.feed_max, n.feed_max)) {
-            const Regime tight = dense_regime(s.tolerance);
+            const Regime tight = dense_regime(s.tolerance, s.u.cwiseAbs() + seg(i + 1).u.cwiseAbs());
             const double alpha = box(s.turn.du, tight);
             const double cap = sampled_speed(alpha, tight.t2, s.turn.s, s.turn.du.norm(), epsilon * (1.0 - plan_margin));
             if (tight_pays(i, tight, alpha, cap, s.junction, s.turn_alpha, s.corner_cap))
@@ -545,7 +567,7 @@ void Lookahead::link(std::size_t i) {
             s.sparse_cap = s.tight_cap = corner_speed(s.turn.alpha, rules_.t2, s.turn.s, s.tolerance);
             const Segment& n = seg(i + 1);
             if ((s.short_block || n.short_block) && s.sparse_cap < std::max(s.feed_max, n.feed_max)) {  // (sparse_estimate's)
-                const Regime tight = dense_regime(s.tolerance);
+                const Regime tight = dense_regime(s.tolerance, s.u.cwiseAbs() + seg(i + 1).u.cwiseAbs());
                 const double alpha = box(s.turn.du, tight);
                 const double cap = corner_speed(alpha, tight.t2, s.turn.s, s.tolerance);
                 if (tight_pays(i, tight, alpha, cap, sparse_, s.turn.alpha, s.sparse_cap)) s.tight_cap = cap;
