@@ -60,6 +60,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
     rules_.t2 = jerk_time(limits_);
     sparse_.t2 = rules_.t2;
     sparse_.sparse = true;
+    sparse_.axes = (1u << limits_.axes) - 1u;
     double jerk = 0.0, acc = 0.0;
     bool all_jerk = true;
     for (int i = 0; i < limits_.axes; ++i) {
@@ -152,10 +153,38 @@ Lookahead::Regime Lookahead::axes_regime(unsigned mask) const {
     return r;
 }
 
+unsigned Lookahead::axes_of(const AxisVector& along) const {
+    unsigned mask = 0;
+    for (int i = 0; i < limits_.axes; ++i)
+        if (along[i] != 0.0) mask |= 1u << i;
+    return mask;
+}
+
+Lookahead::Regime Lookahead::sparse_axes(unsigned mask) const {
+    mask &= sparse_.axes;
+    if (mask == sparse_.axes || mask == 0) return sparse_;
+    if (mask == sparse_mask_) return sparse_answer_;
+    double t2 = 0.0;
+    for (int i = 0; i < limits_.axes; ++i) {
+        const AxisLimits& l = limits_.axis[i];
+        if ((mask & (1u << i)) && l.max_jerk > 0.0 && l.max_acceleration > 0.0) t2 = std::max(t2, l.max_acceleration / l.max_jerk);
+    }
+    sparse_mask_ = mask;
+    Regime& r = sparse_answer_;
+    r = sparse_;
+    if (!(t2 > 0.0) || t2 >= rules_.t2) return r;  // (nothing along it limits jerk: as every axis)
+    r.t2 = t2;
+    r.axes = mask;
+    // Every axis keeps its jerk in that stage, those that do not move along it too.
+    for (int i = 0; i < limits_.axes; ++i)
+        if (limits_.axis[i].max_jerk > 0.0 && !(mask & (1u << i))) r.cap[i] = std::min(r.cap[i], limits_.axis[i].max_jerk * t2);
+    return r;
+}
+
 Lookahead::Regime Lookahead::junction_regime(bool before_dense, const Regime& before, bool after_dense,
                                              const Regime& after) const {
     if (before_dense && after_dense) return after.t2 > before.t2 ? after : before;
-    return before_dense ? before : after_dense ? after : sparse_;
+    return before_dense ? before : after_dense ? after : sparse_axes(before.axes | after.axes);
 }
 
 double Lookahead::box(const AxisVector& dv, const Regime& regime) const {
@@ -171,6 +200,7 @@ Lookahead::Step Lookahead::make_step(const AxisVector& dv, const Regime& regime)
     s.box = box(dv, regime);
     s.t2 = regime.t2;
     s.kernel = two_stage(s.box, s.t2);
+    s.gapped = gapped(regime);
     return s;
 }
 
@@ -221,21 +251,21 @@ Lookahead::Step Lookahead::entry_step(std::size_t i) const {
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     const Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
-    if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box};  // the start
+    if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box, false, gapped(s.regime)};  // the start
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
-    if (overlapped(i - 1)) return {a * prev.alpha, -prev.u, prev.junction.t2, prev.u_box};  // the pulse before falls
-    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box};  // the corner, one speed both sides
+    if (overlapped(i - 1)) return {a * prev.alpha, -prev.u, prev.junction.t2, prev.u_box, false, gapped(prev.junction)};  // the pulse before falls
+    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box, false, gapped(prev.junction)};  // the corner, one speed both sides
 }
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box};  // the stop
+    if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box, false, gapped(s.regime)};  // the stop
     if (overlapped(i)) {  // the next pulse rises
         const Segment& n = seg(i + 1);
-        return {b * n.alpha, n.u, s.junction.t2, n.u_box};
+        return {b * n.alpha, n.u, s.junction.t2, n.u_box, false, gapped(s.junction)};
     }
-    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box};
+    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box, false, gapped(s.junction)};
 }
 
 // ---- Geometry and caps -------------------------------------------------------------------------
@@ -266,7 +296,8 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const bool entry = i > 0 && !entry_is_stop(i), exit = !exit_is_stop(i);
     const double in = entry ? std::min(seg(i - 1).tight_cap, s.feed_max) : 0.0;
     const double out = exit ? std::min(s.tight_cap, s.feed_max) : 0.0;
-    const double alpha = box(s.u, sparse_);  // 1 / the acceleration along u
+    const Regime own = sparse_regime(s.u);
+    const double alpha = box(s.u, own);  // 1 / the acceleration along u
     // v^2 changes by 2 L / alpha at most over the block: the higher end comes down to what it allows.
     const double reach = alpha > 0.0 ? 2.0 * length / alpha : infinity;
     const double v0 = std::min(in, std::sqrt(out * out + reach)), v1 = std::min(out, std::sqrt(v0 * v0 + reach));
@@ -276,10 +307,10 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     // program 260, a 0.05 mm G61 block on an axis with T2 = 93 ms, estimated at T2 and classified
     // dense: +245 % with every tolerance a quarter larger). (The same at a sized start made short
     // blocks after reversals dense at one tolerance and not at the next: AloneBlocks.*.)
-    double exit_jerk = rules_.t2;
+    double exit_jerk = own.t2;
     if (!exit && sized_ && !s.hold_split && !s.hold_end && peak > 0.0 && std::isfinite(peak))
-        exit_jerk = std::min(rules_.t2, std::max(0.0, sized_kernel(peak, alpha, s.u_jerk).width() - peak * alpha));
-    const double jerk_time = 0.5 * (rules_.t2 + exit_jerk);
+        exit_jerk = std::min(own.t2, std::max(0.0, sized_kernel(peak, alpha, s.u_jerk).width() - peak * alpha));
+    const double jerk_time = 0.5 * (own.t2 + exit_jerk);
     double corners = s.feed_max;
     if (jerk_time > 0.0) corners = std::min(corners, length / jerk_time);
     if (entry) corners = std::min(corners, in);
@@ -346,7 +377,7 @@ void Lookahead::classify(std::size_t i) {
     const bool alone = sized_ && entry_is_stop(i) && (i + 1 == count_ || s.kind == Kind::stop);
     s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
               ((entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
-    s.regime = s.dense ? dense : sparse_;
+    s.regime = s.dense ? dense : sparse_regime(s.u);
     s.alpha = box(s.u, s.regime);
 }
 
@@ -564,13 +595,14 @@ void Lookahead::link(std::size_t i) {
     if (s.kind != Kind::stop) {
         s.sparse_cap = s.tight_cap = infinity;
         if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
-            s.sparse_cap = s.tight_cap = corner_speed(s.turn.alpha, rules_.t2, s.turn.s, s.tolerance);
             const Segment& n = seg(i + 1);
+            const Regime machine = sparse_axes(axes_of(s.u) | axes_of(n.u));
+            s.sparse_cap = s.tight_cap = corner_speed(s.turn.alpha, machine.t2, s.turn.s, s.tolerance);
             if ((s.short_block || n.short_block) && s.sparse_cap < std::max(s.feed_max, n.feed_max)) {  // (sparse_estimate's)
                 const Regime tight = dense_regime(s.tolerance, s.u.cwiseAbs() + seg(i + 1).u.cwiseAbs());
                 const double alpha = box(s.turn.du, tight);
                 const double cap = corner_speed(alpha, tight.t2, s.turn.s, s.tolerance);
-                if (tight_pays(i, tight, alpha, cap, sparse_, s.turn.alpha, s.sparse_cap)) s.tight_cap = cap;
+                if (tight_pays(i, tight, alpha, cap, machine, s.turn.alpha, s.sparse_cap)) s.tight_cap = cap;
             }
         }
     }
@@ -588,6 +620,7 @@ Lookahead::Fitting::Fitting(const Lookahead& lookahead, std::size_t i) : la_(loo
     const Segment& s = la_.seg(i);
     in_.length = la_.legs_length(i, 0.0, 0.0);  // (input() takes the overlaps off at the speeds)
     in_.alpha = s.alpha;
+    in_.t2 = s.regime.sparse ? s.regime.t2 : la_.rules_.t2;
     if (s.in_ramp.t2 >= 0.0) in_.in_t2 = s.in_ramp.t2, in_.in_alpha = la_.box(s.u, la_.in_ramp_regime(i));
     if (s.out_ramp.t2 >= 0.0) in_.out_t2 = s.out_ramp.t2, in_.out_alpha = la_.box(s.u, la_.out_ramp_regime(i));
     in_.u = s.u;
@@ -620,7 +653,7 @@ const ProfileInput& Lookahead::Fitting::input(double a, double b) {
     else if (!entry_fixed_) in_.in = la_.entry_shape(i_, a);
     if (out_sized_) la_.resize_sized(i_, b, in_.out);  // (its direction and unit box stay)
     else in_.out.box = b * out_scale_;
-    const double t2 = la_.rules_.t2;
+    const double t2 = in_.t2;
     in_.in_reserve = corner_in_ && in_.in.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.in.box) : 0.0;
     in_.out_reserve = corner_out_ && in_.out.t2 == t2 ? 0.5 * std::max(0.0, t2 - in_.out.box) : 0.0;
     return in_;
@@ -634,7 +667,7 @@ Lookahead::MemoKey Lookahead::Fitting::key() const {
     auto put_vector = [&](const AxisVector& v) {
         for (int k = 0; k < axes; ++k) put(v[k]);
     };
-    put(la_.rules_.t2);
+    put(in_.t2);
     put(la_.legs_length(i_, 0.0, 0.0)), put(in_.alpha), put(in_.u_unit_box), put_vector(in_.u);
     const bool in_overlap = i_ > 0 && la_.overlapped(i_ - 1), out_overlap = la_.overlapped(i_);  // (legs_length's)
     put(in_overlap ? la_.seg(i_ - 1).overlap : 0.0), put(in_overlap ? la_.seg(i_ - 1).overlap_tk : 0.0);
@@ -1066,9 +1099,9 @@ void Lookahead::arrive(Segment& s) const {
     s.u_jerk = 0.0;
     for (int a = 0; a < limits_.axes; ++a)
         if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
-    s.regime = sparse_;
-    s.alpha = box(s.u, sparse_);
-    s.short_block = s.length < s.feed_max * (s.feed_max * s.alpha + rules_.t2);
+    s.regime = sparse_regime(s.u);
+    s.alpha = box(s.u, s.regime);
+    s.short_block = s.length < s.feed_max * (s.feed_max * s.alpha + s.regime.t2);
     s.kind = Kind::stop;
     s.junction = s.regime;
     s.learned_cap = infinity;

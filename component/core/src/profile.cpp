@@ -21,16 +21,16 @@ double height(double unit_box, const AxisVector& d, int i) { return unit_box > 0
 
 // needs_gap for the directions sx x and sy y (signs of +-1: the products' signs are the same),
 // with their unit boxes (< 0: found here when an axis first needs them).
-bool gap_between(const SpacingRules& rules, const AxisVector& x, double sx, double& box_x, const AxisVector& y, double sy,
-                 double& box_y) {
-    if (!(rules.t2 > 0.0)) return false;  // no jerk limit: nothing to smooth
+bool gap_between(const SpacingRules& rules, double t2, const AxisVector& x, double sx, double& box_x, const AxisVector& y,
+                 double sy, double& box_y) {
+    if (!(t2 > 0.0)) return false;  // no jerk limit: nothing to smooth
     for (int i = 0; i < rules.limits.axes; ++i) {
         if (!((sx * x[i]) * (sy * y[i]) < 0.0)) continue;
         const double j = rules.limits.axis[i].max_jerk;
         if (!(j > 0.0)) continue;
         if (box_x < 0.0) box_x = unit_box(rules.limits, x);
         if (box_y < 0.0) box_y = unit_box(rules.limits, y);
-        if (height(box_x, x, i) + height(box_y, y, i) > j * rules.t2 * (1.0 + 1e-12)) return true;
+        if (height(box_x, x, i) + height(box_y, y, i) > j * t2 * (1.0 + 1e-12)) return true;
     }
     return false;
 }
@@ -46,10 +46,13 @@ struct StepView {
     double unit_box;
     int role;       // in profile_legs: 0 the entry, 1 a ramp along +u, 2 along -u, 3 the exit (-1: none)
     bool own;       // StepShape::own
+    bool gapped;    // StepShape::gapped
 };
 
-StepView view(const StepShape& shape, int role = -1) {
-    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role, shape.own};
+// (A step at the machine's stage is gapped whoever made it.)
+StepView view(const SpacingRules& rules, const StepShape& shape, int role = -1) {
+    return {shape.box, shape.t2, &shape.direction, 1.0, shape.box <= 0.0 && shape.direction.isZero(), shape.unit_box, role, shape.own,
+            shape.gapped || shape.t2 == rules.t2};
 }
 
 // GapMemo's entry for two roles (the gap is symmetric: the same products and sums); -1: none.
@@ -60,7 +63,7 @@ int memo_pair(int x, int y) {
 }
 
 bool find_gap(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* memo, int k) {
-    const bool needed = gap_between(rules, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
+    const bool needed = gap_between(rules, x.t2, *x.direction, x.sign, x.unit_box, *y.direction, y.sign, y.unit_box);
     if (k >= 0) memo->pair[k] = needed ? 2 : 1;
     return needed;
 }
@@ -80,20 +83,20 @@ double spacing(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* mem
     if (x.none) return std::max(0.5 * y.box, in_order);  // no step
     if (y.none) return std::max(0.5 * x.box, in_order);
     if (x.t2 != y.t2 || x.own || y.own) return 0.5 * (x.box + x.t2 + y.box + y.t2);
-    return 0.5 * (x.box + y.box) + (x.t2 == rules.t2 && gap(rules, x, y, memo) ? rules.t2 : 0.0);
+    return 0.5 * (x.box + y.box) + ((x.gapped || y.gapped) && gap(rules, x, y, memo) ? x.t2 : 0.0);
 }
 
 }  // namespace
 
-bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y) const {
+bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y, double stage) const {
     double box_x = -1.0, box_y = -1.0;
-    return gap_between(*this, x, 1.0, box_x, y, 1.0, box_y);
+    return gap_between(*this, stage < 0.0 ? t2 : stage, x, 1.0, box_x, y, 1.0, box_y);
 }
 
 double SpacingRules::unit_box(const AxisVector& d) const { return firtp::unit_box(limits, d); }
 
 double SpacingRules::spacing(const StepShape& x, const StepShape& y) const {
-    StepView vx = view(x), vy = view(y);
+    StepView vx = view(*this, x), vy = view(*this, y);
     return firtp::spacing(*this, vx, vy);
 }
 
@@ -104,12 +107,13 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     std::array<double, 3> speed{};
     std::array<int, 3> leg{};  // which of x0, xp, x1 each gap between steps is
     int n = 0;
-    steps[n] = view(block.in, 0);
+    steps[n] = view(rules, block.in, 0);
     // A ramp's box and jerk stage: the block's own, or those of the junction's regime it shares.
+    const double own_t2 = block.t2 < 0.0 ? rules.t2 : block.t2;
     auto ramp = [&](double dv, double alpha, double t2) {
         const bool own = t2 < 0.0;
-        return StepView{std::abs(dv) * (own ? block.alpha : alpha), own ? rules.t2 : t2, &block.u, dv > 0.0 ? 1.0 : -1.0, false,
-                        block.u_unit_box, dv > 0.0 ? 1 : 2, false};
+        return StepView{std::abs(dv) * (own ? block.alpha : alpha), own ? own_t2 : t2, &block.u, dv > 0.0 ? 1.0 : -1.0, false,
+                        block.u_unit_box, dv > 0.0 ? 1 : 2, false, own || t2 == rules.t2};
     };
     if (p != a) {
         speed[n] = a, leg[n] = 0;
@@ -120,7 +124,7 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
         steps[++n] = ramp(b - p, block.out_alpha, block.out_t2);
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
-    steps[++n] = view(block.out, 3);
+    steps[++n] = view(rules, block.out, 3);
     std::array<double, 3> x{};
     for (int i = 0; i < n; ++i) x[i] = spacing(rules, steps[i], steps[i + 1], block.gaps);
     // The reserves keep T2 between a neighbour's ramp and this block's boxes across each junction;
@@ -139,7 +143,7 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     // A ramp sharing a corner's jerk stage in a dense run's regime: its kernel ends by the
     // corner's middle (its lead there would add to the corner's error).
     auto clear_of_corner = [&](const StepView& corner, const StepView& r) {
-        return r.t2 == corner.t2 && r.t2 != rules.t2 && !corner.own && corner.box > 0.0 ? 0.5 * (r.box + r.t2) : 0.0;
+        return r.t2 == corner.t2 && !corner.gapped && !corner.own && corner.box > 0.0 ? 0.5 * (r.box + r.t2) : 0.0;
     };
     if (n >= 2) {
         x[0] = std::max(x[0], clear_of_corner(steps[0], steps[1]));
@@ -149,12 +153,12 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     // Steps further apart than neighbours: boxes of opposite sign on an axis keep T2 between them.
     for (int i = 0; i + 2 <= n; ++i)
         for (int k = i + 2; k <= n; ++k) {
-            if (steps[i].t2 != rules.t2 || steps[k].t2 != rules.t2 || steps[i].own || steps[k].own ||
+            if (steps[i].t2 != steps[k].t2 || !(steps[i].gapped || steps[k].gapped) || steps[i].own || steps[k].own ||
                 !gap(rules, steps[i], steps[k], block.gaps))
                 continue;
             double apart = 0.0;
             for (int m = i; m < k; ++m) apart += x[m];
-            const double need = 0.5 * (steps[i].box + steps[k].box) + rules.t2;
+            const double need = 0.5 * (steps[i].box + steps[k].box) + steps[i].t2;
             if (apart < need) x[i] += need - apart;
         }
     ProfileLegs legs;

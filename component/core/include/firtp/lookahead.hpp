@@ -101,9 +101,12 @@ private:
     enum class Kind : std::uint8_t { stop, corner, dense };
 
     // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
-    // reach. Sparse steps use the machine's T2 = max A / J and A. A dense run (dense.hpp) uses
-    // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)): the run's accelerations may then swing
-    // from -h to +h within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
+    // reach. Sparse steps use A and T2 = max A / J over the axes moving along them (a block's own
+    // along it, a corner's along either block; every other axis' box held to J T2), so a slow-jerk
+    // axis that does not move leaves them alone (sparse_regime). A dense run (dense.hpp) uses
+    // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)), the largest over the axes moving in it (the
+    // others' boxes held to J T2_d / 2): the run's accelerations may then swing from -h to +h
+    // within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
     // h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next to a corner in a run's regime share
     // it (Segment::in_ramp), and so do a corner's between sparse blocks where it takes its
     // tolerance's regime (tight_pays); a sparse block's start and stop are sized to themselves
@@ -111,7 +114,8 @@ private:
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
-        bool sparse = false;  // the machine's own (sparse_)
+        bool sparse = false;  // a sparse regime: the acceleration limits, T2 = max A / J of `axes`
+        unsigned axes = ~0u;  // a sparse regime's axes (bit a: axis a; all: sparse_)
         bool operator==(const Regime&) const = default;
     };
 
@@ -199,7 +203,10 @@ private:
         double t2 = 0.0;
         Kernel kernel;
         bool own = false;  // sized to itself (StepShape::own)
-        StepShape shape() const { return {box, dv.norm() > 0.0 ? AxisVector(dv.normalized()) : AxisVector::Zero(), t2, -1.0, own}; }
+        bool gapped = false;  // StepShape::gapped
+        StepShape shape() const {
+            return {box, dv.norm() > 0.0 ? AxisVector(dv.normalized()) : AxisVector::Zero(), t2, -1.0, own, gapped};
+        }
     };
     // The step after the frozen one, as the plan has it now.
     enum class StepKind : std::uint8_t { ramp, junction, stop, start };
@@ -264,6 +271,14 @@ private:
     // program 293, +86 % with the tolerance raised a quarter; now 24 % faster and no cliff.)
     Regime dense_regime(double epsilon, const AxisVector& along) const;
     Regime axes_regime(unsigned mask) const;  // dense_regime's for the axes in mask (bit a: axis a)
+    // A sparse regime of the axes moving `along` (or in mask): T2 = max A / J over them, every
+    // other axis' box held to J T2; sparse_ where that is every axis' T2 or none limits jerk.
+    Regime sparse_regime(const AxisVector& along) const { return sparse_axes(axes_of(along)); }
+    Regime sparse_axes(unsigned mask) const;
+    unsigned axes_of(const AxisVector& along) const;
+    // A step whose boxes may reach the acceleration limits (StepShape::gapped): a sparse regime's,
+    // or one whose stage is the machine's.
+    bool gapped(const Regime& r) const { return r.sparse || r.t2 == rules_.t2; }
     // The regime of the junction between a block (dense or not, in `before`) and the next: a
     // junction next to a dense block is smoothed as the dense run is, the wider jerk stage of two.
     Regime junction_regime(bool before_dense, const Regime& before, bool after_dense, const Regime& after) const;
@@ -422,6 +437,9 @@ private:
     mutable Regime regime_wide_{};
     mutable unsigned regime_mask_ = ~0u;
     mutable Regime regime_answer_{};
+    // sparse_axes()'s last answer other than sparse_.
+    mutable unsigned sparse_mask_ = ~0u;
+    mutable Regime sparse_answer_{};
 
     // max_entry()'s last search per ring slot and all it read (Fitting::key, feed_max, exit_max):
     // the backward pass asks again where nothing changed, to see that nothing did.

@@ -1,9 +1,10 @@
 // The speed profile of one block: up to three legs at constant command speed (entry a, cruise p,
 // exit b) joined by speed steps along the block, between the steps at its two ends.
 //
-// Principle: every step k has a kernel two_stage(T1_k, T2) with the machine's common jerk time T2
-// (kernel.hpp). The motion is then a moving average of length T2 of a piecewise linear velocity W
-// whose ramps are boxes of acceleration dV_k / T1_k, centred on the steps. The limits hold when
+// Principle: every step k has a kernel two_stage(T1_k, T2) (kernel.hpp), T2 the jerk time of its
+// regime (the axes moving in it: lookahead.hpp, Regime). Steps of one T2 are a moving average of
+// length T2 of a piecewise linear velocity W whose ramps are boxes of acceleration dV_k / T1_k,
+// centred on the steps. The limits hold when
 //   - each box is within the acceleration limits (T1_k = max_a |dV_a| / A_a),
 //   - boxes do not overlap: consecutive steps are at least (T1_k + T1_k+1) / 2 apart, and
 //   - boxes whose accelerations have opposite signs on an axis (and together exceed J_a T2) are
@@ -33,20 +34,24 @@ struct StepShape {
     double t2 = 0.0;
     double unit_box = -1.0;  // SpacingRules::unit_box(direction), where the caller knows it (< 0: not)
     bool own = false;        // its kernel is sized to it alone (sized_kernel): it shares no moving average
+    // Its boxes may reach the acceleration limits (a sparse regime's step): boxes of opposite sign
+    // on an axis within its T2 may need a jerk gap (needs_gap at that T2).
+    bool gapped = false;
 };
 
 // The shared constants of the spacing rules.
 struct SpacingRules {
     MachineLimits limits;
-    double t2 = 0.0;  // the common jerk time
+    double t2 = 0.0;  // the machine's jerk time: the widest sparse one, every axis' max A / J
 
     // Least distance in command time between the centres of consecutive steps x then y. Steps
     // with different jerk stages do not share the moving average: their kernels stay apart. Always
     // at least half the difference of their widths: kernels start in the steps' order.
     double spacing(const StepShape& x, const StepShape& y) const;
     // True when boxes in directions x and y need a jerk gap of T2 between them (opposite signs on
-    // an axis whose accelerations at the limit would swing by more than J T2).
-    bool needs_gap(const AxisVector& x, const AxisVector& y) const;
+    // an axis whose accelerations at the limit would swing by more than J T2); T2 the machine's
+    // unless given.
+    bool needs_gap(const AxisVector& x, const AxisVector& y, double t2 = -1.0) const;
     // T1 per unit of a step in direction d, max_a |d_a| / A_a (the same for -d): the box heights
     // the jerk gaps compare are |d_a| / that.
     double unit_box(const AxisVector& d) const;
@@ -64,9 +69,10 @@ struct ProfileInput {
     double alpha = 0.0;          // T1 per unit of speed change along the block: max_a |u_a| / A_a
     // A ramp next to a corner smoothed in a dense run's regime shares that regime's jerk stage
     // (lookahead.hpp, Segment::in_ramp): the ramp a -> p takes the entry's (in_t2, in_alpha), the
-    // ramp p -> b the exit's. t2 < 0: alpha and the common jerk time.
+    // ramp p -> b the exit's. in_t2 / out_t2 < 0: alpha and the block's own jerk stage (t2).
     double in_alpha = 0.0, in_t2 = -1.0;
     double out_alpha = 0.0, out_t2 = -1.0;
+    double t2 = -1.0;  // the block's own jerk stage (its sparse regime's; < 0: the machine's)
     AxisVector u = AxisVector::Zero();
     double u_unit_box = -1.0;    // SpacingRules::unit_box(u), where the caller knows it (< 0: not)
     StepShape in;                // the step at the start (before the entry leg)
