@@ -109,6 +109,52 @@ TEST(RandomMachines, CornersLimitsAndEndHoldOnEverySample) { check_programs(21, 
 
 TEST(RandomMachines, ContourToleranceHolds) { check_programs(22, 100, ToleranceMeaning::contour); }
 
+// The same programs on machines with one to three more axes that do not move, their jerk stages
+// mostly far longer (1e3-1e6 mm/s^3): each step's stage is that of the axes moving in it
+// (lookahead.hpp, Regime), the others held within it, so every axis keeps its limits, and the
+// programs take about as long as without those axes.
+TEST(RandomMachines, AxesThatDoNotMoveKeepTheirLimitsAndLeaveTheStagesAlone) {
+    const std::uint64_t seed = 23 + test::random_seed_offset();
+    std::mt19937_64 rng(seed);
+    Worst worst;
+    std::size_t widened = 0, slower = 0;
+    double own_time = 0.0, more_time = 0.0, slowest = 1.0;
+    for (int k = 0; k < test::random_scaled(200); ++k) {
+        test::RandomCase c = test::random_case(rng);
+        const double own = static_cast<double>(plan_trajectory(c.parameters, AxisVector::Zero(), c.blocks).samples.size()) * c.parameters.period;
+        MachineLimits& l = c.parameters.limits;
+        const int axes = std::min(9, l.axes + 1 + static_cast<int>(rng() % 3));
+        for (int a = l.axes; a < axes; ++a) {
+            l.axis[a].max_velocity = test::log_uniform(rng, 20, 300);
+            l.axis[a].max_acceleration = test::log_uniform(rng, 100, 3000);
+            l.axis[a].max_jerk = test::log_uniform(rng, 1e3, 1e6);
+        }
+        const double before = jerk_time(smoothing_limits(l));
+        l.axes = axes;
+        if (jerk_time(smoothing_limits(l)) > before) ++widened;
+        SCOPED_TRACE("seed " + std::to_string(seed) + " program " + std::to_string(k));
+        const Trajectory t = plan_trajectory(c.parameters, AxisVector::Zero(), c.blocks);
+        EXPECT_EQ(t.stats.refused, 0u);
+        EXPECT_EQ(t.stats.unfit, 0u);
+        expect_within(c, t, worst);
+        ASSERT_FALSE(::testing::Test::HasFailure());
+        ++worst.programs;
+        worst.blocks += c.blocks.size();
+        const double more = static_cast<double>(t.samples.size()) * c.parameters.period;
+        own_time += own, more_time += more;
+        if (more > own * (1 + 1e-9)) ++slower, slowest = std::max(slowest, more / own);
+    }
+    std::printf("%zu programs (%zu with the machine's T2 widened by an axis that does not move), %zu corners: worst corner "
+                "error / tolerance %.4f, |v| %.4f, |a| %.4f, |j| %.4f of the limits (finite differences); cycle times "
+                "%.3f s against %.3f s without those axes, %zu slower (at most %.3fx)\n",
+                worst.programs, widened, worst.corners, worst.corner, worst.velocity, worst.acceleration, worst.jerk, more_time,
+                own_time, slower, slowest);
+    EXPECT_GT(widened, worst.programs / 2);
+    // (With every step's stage every axis': 380.392 s against 361.421 s, 115 slower, up to 8.5x.)
+    EXPECT_LT(more_time, own_time * 1.01);
+    EXPECT_LT(slowest, 1.5);
+}
+
 // The check sums the legs of a context of blocks before the re-planned ones, and sweeps the limits
 // from the widest kernel back. Where the newest legs brought a kernel wider than any before, the
 // sweep reached past the context: a step at its edge rose without the leg it ends, a jump of that
