@@ -3,6 +3,7 @@
 
 #include "inifile.hh"  // LinuxCNC's IniFile (liblinuxcncini), the reader LinuxCNC itself uses
 #include <firtp/hal/module_number.hpp>
+#include <firtp/parameters.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -37,27 +38,31 @@ IniJerk read_ini_jerk(const char* path) {
         out.error = std::string(path) + ": cannot be opened";
         return out;
     }
+    const std::string axes = axes_of(ini);
     std::vector<std::pair<std::string, std::string>> keys{{"TRAJ", "MAX_LINEAR_JERK"}};  // section, key
-    for (char axis : axes_of(ini)) keys.emplace_back(std::string("AXIS_") + axis, "MAX_JERK");
-    for (const auto& [section, key] : keys) {
+    for (char axis : axes) keys.emplace_back(std::string("AXIS_") + axis, "MAX_JERK");
+    std::vector<double> given(keys.size(), 0.0);  // 0: not set
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const auto& [section, key] = keys[k];
         int line = 0;
         const char* text = ini.Find(key.c_str(), section.c_str(), 1, &line);
         if (text == nullptr) continue;
-        const std::string where = "[" + section + "]" + key + " = " + text + " (line " + std::to_string(line) + ")";
         const std::optional<double> value = module_number(text);
         if (!value || *value < 0.0) {
             out.error = std::string(path) + ":" + std::to_string(line) + ": [" + section + "]" + key + " = '" + text +
                         "': not a number >= 0 (units/s^3; 0: not set)";
-            break;
+            return out;
         }
-        if (*value == 0.0) continue;
-        if (out.jerk == 0.0 || *value < out.jerk) {
-            if (out.jerk != 0.0) out.differs += (out.differs.empty() ? "" : ", ") + out.from;
+        given[k] = *value;
+        if (*value > 0.0 && (out.jerk == 0.0 || *value < out.jerk)) {
             out.jerk = *value;
-            out.from = where;
-        } else if (*value != out.jerk) {
-            out.differs += (out.differs.empty() ? "" : ", ") + where;
+            out.from = "[" + section + "]" + key + " = " + text + " (line " + std::to_string(line) + ")";
         }
+    }
+    for (std::size_t k = 1; k < keys.size(); ++k) {
+        const char letter = axes[k - 1];
+        const double jerk = ini_axis_jerk(letter, given[k], given[0]);
+        out.axis[std::string(axis_letters).find(letter)] = jerk > 0.0 ? jerk : out.jerk;
     }
     return out;
 }

@@ -1,9 +1,11 @@
 // tp_ini: what firtp_tp takes from the machine's INI, at load (rtapi_app_main) only: the jerk limit
 // and the task's cycle time.
 // LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK; so does
-// firtp_tp. TpCore applies one jerk limit to every axis, so the smallest value given is taken.
+// firtp_tp, per axis as firtp does (ini_axis_jerk, parameters.hpp).
 // Built into the firtp_tp module only: it reads with LinuxCNC's own INI reader (liblinuxcncini).
 #pragma once
+
+#include "tp_core.hpp"
 
 #include <string>
 
@@ -12,7 +14,9 @@ namespace firtp::linuxcnc_tp {
 struct IniJerk {
     double jerk = 0.0;     // the smallest positive value of the keys below; 0: none of them set
     std::string from;      // the key that gave it, e.g. "[TRAJ]MAX_LINEAR_JERK = 20000 (line 70)"
-    std::string differs;   // keys with other values, which firtp_tp does not apply (one jerk for all axes)
+    // Per axis X..W: ini_axis_jerk of its keys; an axis of [TRAJ]COORDINATES without one takes
+    // `jerk`; 0 where not in COORDINATES or nothing is set.
+    Pose axis{};
     std::string error;     // unreadable file or a value that is not a number >= 0: file, line, key, text
 };
 

@@ -12,9 +12,9 @@
 // module-static: motmod's TP_STRUCT has a frozen layout, only reverse_run and the copies of the
 // position and status are kept in it.
 //
-// The jerk limit: jerk= if given, else the INI's [TRAJ]MAX_LINEAR_JERK and [AXIS_L]MAX_JERK as
-// LinuxCNC master's jerk-limited planner reads them (the smallest: TpCore has one jerk for every
-// axis), else 100000. The INI is the one the `linuxcnc` launcher exports as INI_FILE_NAME, which
+// The jerk limit: jerk= if given (every axis), else the INI's [TRAJ]MAX_LINEAR_JERK and
+// [AXIS_L]MAX_JERK per axis as LinuxCNC master's jerk-limited planner reads them (an axis without
+// one: the smallest given), else 100000. The INI is the one the `linuxcnc` launcher exports as INI_FILE_NAME, which
 // rtapi_app inherits; it is read here at load only (tp_ini.hpp).
 //
 // Load-time settings, as in effect, are read-only params: halcmd show param firtp_tp (man 9 firtp_tp).
@@ -66,7 +66,7 @@ static int stages = 2;
 RTAPI_MP_INT(stages, "FIR stages, 1..4 (2)");
 static char* jerk = nullptr;
 RTAPI_MP_STRING(jerk, "jerk limit of every axis, machine units/s^3 (0: none); overrides the INI's [TRAJ]MAX_LINEAR_JERK "
-                      "and [AXIS_L]MAX_JERK (the smallest of those; without them 100000)");
+                      "and [AXIS_L]MAX_JERK (per axis; without them 100000)");
 static char* tolerance = nullptr;
 RTAPI_MP_STRING(tolerance, "tolerance for G64 without P (and inside arcs in G61), machine units (" FIRTP_DEFAULT_TOLERANCE_TEXT ")");
 static char* chord_tol = nullptr;
@@ -112,6 +112,7 @@ enum JerkSource : int { jerk_default = 0, jerk_parameter = 1, jerk_ini = 2 };
 struct Params {
     hal_float_t jerk;
     hal_s32_t jerk_source;
+    hal_float_t axis_jerk[firtp::linuxcnc_tp::pose_axes];  // X..W as applied
     hal_s32_t stages;
     hal_float_t t[4];  // as given; 0: from the axis limits (or no fixed chain)
     hal_float_t tolerance;
@@ -272,6 +273,7 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     if (p == nullptr) return -1;
     p->jerk = s.jerk;
     p->jerk_source = source;
+    for (std::size_t a = 0; a < s.axis_jerk.size(); ++a) p->axis_jerk[a] = s.axis_jerk[a] > 0.0 ? s.axis_jerk[a] : s.jerk;
     p->stages = s.stages;
     for (std::size_t i = 0; i < 4; ++i) p->t[i] = s.filter_times[i];
     p->tolerance = s.default_tolerance;
@@ -287,6 +289,8 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     int r = 0;
     r = r ? r : hal_param_float_newf(HAL_RO, &p->jerk, comp_id, "firtp_tp.jerk");
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->jerk_source, comp_id, "firtp_tp.jerk-source");
+    for (int a = 0; a < firtp::linuxcnc_tp::pose_axes && r == 0; ++a)
+        r = hal_param_float_newf(HAL_RO, &p->axis_jerk[a], comp_id, "firtp_tp.jerk-%c", "xyzabcuvw"[a]);
     r = r ? r : hal_param_s32_newf(HAL_RO, &p->stages, comp_id, "firtp_tp.stages");
     for (int i = 0; i < 4 && r == 0; ++i) r = hal_param_float_newf(HAL_RO, &p->t[i], comp_id, "firtp_tp.t%d", i + 1);
     r = r ? r : hal_param_float_newf(HAL_RO, &p->tolerance, comp_id, "firtp_tp.tolerance");
@@ -323,12 +327,9 @@ bool choose_jerk(firtp::linuxcnc_tp::TpSettings& s, JerkSource& source, const ch
     }
     if (found.jerk == 0.0) return true;
     s.jerk = found.jerk;
+    s.axis_jerk = found.axis;
     source = jerk_ini;
-    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: jerk %g from %s %s\n", s.jerk, ini, found.from.c_str());
-    if (!found.differs.empty())
-        rtapi_print_msg(RTAPI_MSG_ERR,
-                        "firtp_tp: one jerk limit for every axis: %g from %s; other values (%s) are not applied\n",
-                        s.jerk, found.from.c_str(), found.differs.c_str());
+    rtapi_print_msg(RTAPI_MSG_INFO, "firtp_tp: jerk per axis from %s (the smallest %g, %s)\n", ini, s.jerk, found.from.c_str());
     return true;
 }
 

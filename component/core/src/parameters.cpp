@@ -102,6 +102,11 @@ MachineLimits planned_limits(const PlannerParameters& parameters) {
     return planned;
 }
 
+double ini_axis_jerk(char letter, double own, double linear) {
+    if (letter == 'A' || letter == 'B' || letter == 'C' || !(linear > 0.0)) return own > 0.0 ? own : 0.0;
+    return own > 0.0 ? std::min(own, linear) : linear;
+}
+
 double jerk_time(const MachineLimits& limits) {
     return worst_ratio(limits, &AxisLimits::max_acceleration, &AxisLimits::max_jerk);
 }

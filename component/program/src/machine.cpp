@@ -118,13 +118,11 @@ void read_axes(const IniFile& ini, MachineConfig& m) {
     read_coordinates(ini, m);
     // LinuxCNC master's jerk-limited planner reads [TRAJ]MAX_LINEAR_JERK beside [AXIS_L]MAX_JERK; so do
     // firtp and firtp_tp (tp_ini.cpp): every linear axis at most that (0: not set).
-    if (linear_jerk > 0.0)
-        for (int i = 0; i < m.limits.axes; ++i) {
-            const char letter = axis_letters[i];
-            if (letter == 'A' || letter == 'B' || letter == 'C') continue;
-            double& jerk = m.limits.axis[i].max_jerk;
-            jerk = own_jerk[i] && jerk > 0.0 ? std::min(jerk, linear_jerk) : linear_jerk;
-        }
+    for (int i = 0; i < m.limits.axes; ++i) {
+        double& jerk = m.limits.axis[i].max_jerk;
+        const double given = ini_axis_jerk(axis_letters[i], own_jerk[i] ? jerk : 0.0, linear_jerk);
+        if (own_jerk[i] || given > 0.0) jerk = given;
+    }
 }
 
 // What LinuxCNC's interpreter reads beside the INI; LINEAR_UNITS as LinuxCNC spells mm.

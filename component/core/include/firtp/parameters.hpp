@@ -77,13 +77,18 @@ MachineLimits planned_limits(const PlannerParameters& parameters);
 // a tolerance. Smoothing at the limits needs no cap: it checks every chord's corner.
 double arc_speed_limit(const FilterTimes& filters, double radius, double tolerance);
 
+// An axis' jerk limit from the INI keys of LinuxCNC master's jerk-limited planner: its
+// [AXIS_L]MAX_JERK (`own`, 0: not set), a linear axis (not A, B, C) at most
+// [TRAJ]MAX_LINEAR_JERK (`linear`, 0: not set); 0 where neither applies. firtp and firtp_tp read it so.
+double ini_axis_jerk(char letter, double own, double linear);
+
 // T2's default for the paper's chain (Eq. 4: j = a / T2): max over the axes of A_a / J_a; 0 when
 // no axis limits jerk. Smoothing at the limits: jerk_time(smoothing_limits(limits)).
 double jerk_time(const MachineLimits& limits);
 
-// The limits smoothing at the limits plans with: every step shares one jerk time
-// T2 = max_a min(A_a / J_a, sqrt(2 V_a / J_a)), and the acceleration of axis a is capped at
-// min(A_a, J_a T2). A step of dV on an axis reaches at most sqrt(J_a dV) (dV <= 2 V_a, a reversal),
+// The limits smoothing at the limits plans with: the widest jerk time
+// T2 = max_a min(A_a / J_a, sqrt(2 V_a / J_a)) (a step's own is over the axes moving in it:
+// lookahead.hpp, Regime), and the acceleration of axis a is capped at min(A_a, J_a T2). A step of dV on an axis reaches at most sqrt(J_a dV) (dV <= 2 V_a, a reversal),
 // and for every such step this T2 gives a kernel no wider than T2 = A_a / J_a does: planned at a
 // higher A_a, T2 would grow for every step, and more acceleration would make the machine slower
 // (tests/bench/cliffs.cpp). Lower accelerations only, so every guarantee against `limits` holds.
