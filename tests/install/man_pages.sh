@@ -27,8 +27,8 @@ check_names() {
     grep -qF -- "$name" <<< "$text" || missing+=("$name")
   done < <({
     grep -oE 'RTAPI_MP_[A-Z]+\(([a-z_0-9]+)' "$source" | sed -E 's/.*\(//'
-    # pins and params: "comp.x.y" literals; %d becomes N, a bare list entry "name" gets comp.
-    grep -oE "\"$comp\\.[a-z0-9%.-]+\"" "$source" | tr -d '"' | grep -v '%s' | sed -e 's/%d/N/g' -e 's/\.tN$/.t1/'
+    # pins and params: "comp.x.y" literals; %d becomes N, an axis letter %c x, a bare list entry "name" gets comp.
+    grep -oE "\"$comp\\.[a-z0-9%.-]+\"" "$source" | tr -d '"' | grep -v '%s' | sed -e 's/%d/N/g' -e 's/\.tN$/.t1/' -e 's/%c/x/g'
   } | sort -u)
   if ((${#missing[@]})); then echo "FAIL: $(basename "$page") does not mention: ${missing[*]}"; return 1; fi
   echo "$(basename "$page"): names every module parameter, pin and param of $(basename "$source")"
