@@ -130,10 +130,7 @@ Lookahead::Regime Lookahead::dense_regime(double epsilon, const AxisVector& alon
         regime_mask_ = ~0u;
         regime_wide_ = axes_regime(regime_all_);
     }
-    unsigned mask = 0;
-    for (int i = 0; i < limits_.axes; ++i)
-        if (along[i] != 0.0) mask |= 1u << i;
-    mask &= regime_all_;
+    const unsigned mask = axes_of(along) & regime_all_;
     // (Nothing along it limits jerk: the stage of every axis.)
     if (mask == regime_all_ || mask == 0) return regime_wide_;
     if (mask != regime_mask_) regime_mask_ = mask, regime_answer_ = axes_regime(mask);
