@@ -200,7 +200,7 @@ struct TpCore::Impl {
             AxisLimits& l = p.limits.axis[a];
             l.max_velocity = std::max(vel_limits[a], 0.0);
             l.max_acceleration = std::max(acc_limits[a], 0.0);
-            l.max_jerk = s.axis_jerk[a] > 0.0 ? s.axis_jerk[a] : std::max(s.jerk, 0.0);
+            l.max_jerk = s.jerk_of(a);
         }
         p.fixed_chain = s.filter_times[0] > 0.0;
         if (p.fixed_chain) {

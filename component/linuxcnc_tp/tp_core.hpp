@@ -32,6 +32,7 @@
 #include <firtp/defaults.hpp>
 #include <firtp/parameters.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -56,6 +57,7 @@ struct TpSettings {
     std::array<double, 4> filter_times{0.0, 0.0, 0.0, 0.0};  // s, 0: T1 = max v/a, T2 = max a/j over the axes
     double jerk = 100000.0;            // units/s^3 on every axis (0: none); LinuxCNC 2.9 has no jerk limits
     Pose axis_jerk{};                  // units/s^3 per axis X..W where > 0 (the INI's), else `jerk`
+    double jerk_of(std::size_t axis) const { return axis_jerk[axis] > 0.0 ? axis_jerk[axis] : std::max(jerk, 0.0); }
     double default_tolerance = defaults::tolerance;  // units: G64 without P, and inside arcs in G61/G61.1
     ToleranceMeaning tolerance_meaning = ToleranceMeaning::corner_point;  // what the tolerance bounds
     double chord_tolerance = defaults::arc_chord_tolerance;  // units: largest sagitta of an arc's chords

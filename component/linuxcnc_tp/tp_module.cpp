@@ -273,7 +273,7 @@ int make_params(const firtp::linuxcnc_tp::TpSettings& s, JerkSource source) {
     if (p == nullptr) return -1;
     p->jerk = s.jerk;
     p->jerk_source = source;
-    for (std::size_t a = 0; a < s.axis_jerk.size(); ++a) p->axis_jerk[a] = s.axis_jerk[a] > 0.0 ? s.axis_jerk[a] : s.jerk;
+    for (std::size_t a = 0; a < s.axis_jerk.size(); ++a) p->axis_jerk[a] = s.jerk_of(a);
     p->stages = s.stages;
     for (std::size_t i = 0; i < 4; ++i) p->t[i] = s.filter_times[i];
     p->tolerance = s.default_tolerance;

@@ -161,11 +161,10 @@ Lookahead::Regime Lookahead::sparse_axes(unsigned mask) const {
     mask &= sparse_.axes;
     if (mask == sparse_.axes || mask == 0) return sparse_;
     if (mask == sparse_mask_) return sparse_answer_;
-    double t2 = 0.0;
-    for (int i = 0; i < limits_.axes; ++i) {
-        const AxisLimits& l = limits_.axis[i];
-        if ((mask & (1u << i)) && l.max_jerk > 0.0 && l.max_acceleration > 0.0) t2 = std::max(t2, l.max_acceleration / l.max_jerk);
-    }
+    MachineLimits moving = limits_;  // (an axis without a jerk limit has no stage: jerk_time)
+    for (int i = 0; i < limits_.axes; ++i)
+        if (!(mask & (1u << i))) moving.axis[i].max_jerk = 0.0;
+    const double t2 = jerk_time(moving);
     sparse_mask_ = mask;
     Regime& r = sparse_answer_;
     r = sparse_;
@@ -197,7 +196,7 @@ Lookahead::Step Lookahead::make_step(const AxisVector& dv, const Regime& regime)
     s.box = box(dv, regime);
     s.t2 = regime.t2;
     s.kernel = two_stage(s.box, s.t2);
-    s.gapped = gapped(regime);
+    s.gapped = regime.sparse;
     return s;
 }
 
@@ -248,21 +247,21 @@ Lookahead::Step Lookahead::entry_step(std::size_t i) const {
 StepShape Lookahead::entry_shape(std::size_t i, double a) const {
     const Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return frozen_.step.shape();
-    if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box, false, gapped(s.regime)};  // the start
+    if (entry_is_stop(i)) return sized(i) ? sized_shape(i, a, s.u) : StepShape{a * s.alpha, s.u, s.regime.t2, s.u_box, false, s.regime.sparse};  // the start
     const Segment& prev = seg(i - 1);
     if (prev.kind == Kind::dense) return make_step(a * s.u - prev.b * prev.u, prev.junction).shape();  // speed and turn at once
-    if (overlapped(i - 1)) return {a * prev.alpha, -prev.u, prev.junction.t2, prev.u_box, false, gapped(prev.junction)};  // the pulse before falls
-    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box, false, gapped(prev.junction)};  // the corner, one speed both sides
+    if (overlapped(i - 1)) return {a * prev.alpha, -prev.u, prev.junction.t2, prev.u_box, false, prev.junction.sparse};  // the pulse before falls
+    return {a * prev.turn_alpha, prev.turn.direction, prev.junction.t2, prev.turn_box, false, prev.junction.sparse};  // the corner, one speed both sides
 }
 
 StepShape Lookahead::exit_shape(std::size_t i, double b) const {
     const Segment& s = seg(i);
-    if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box, false, gapped(s.regime)};  // the stop
+    if (exit_is_stop(i)) return sized(i) ? sized_shape(i, b, -s.u) : StepShape{b * s.alpha, -s.u, s.regime.t2, s.u_box, false, s.regime.sparse};  // the stop
     if (overlapped(i)) {  // the next pulse rises
         const Segment& n = seg(i + 1);
-        return {b * n.alpha, n.u, s.junction.t2, n.u_box, false, gapped(s.junction)};
+        return {b * n.alpha, n.u, s.junction.t2, n.u_box, false, s.junction.sparse};
     }
-    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box, false, gapped(s.junction)};
+    return {b * s.turn_alpha, s.turn.direction, s.junction.t2, s.turn_box, false, s.junction.sparse};
 }
 
 // ---- Geometry and caps -------------------------------------------------------------------------
@@ -593,10 +592,11 @@ void Lookahead::link(std::size_t i) {
         s.sparse_cap = s.tight_cap = infinity;
         if (s.turn.beta >= straight_angle && std::isfinite(s.tolerance)) {
             const Segment& n = seg(i + 1);
-            const Regime machine = sparse_axes(axes_of(s.u) | axes_of(n.u));
+            const AxisVector either = s.u.cwiseAbs() + n.u.cwiseAbs();
+            const Regime machine = sparse_regime(either);
             s.sparse_cap = s.tight_cap = corner_speed(s.turn.alpha, machine.t2, s.turn.s, s.tolerance);
             if ((s.short_block || n.short_block) && s.sparse_cap < std::max(s.feed_max, n.feed_max)) {  // (sparse_estimate's)
-                const Regime tight = dense_regime(s.tolerance, s.u.cwiseAbs() + seg(i + 1).u.cwiseAbs());
+                const Regime tight = dense_regime(s.tolerance, either);
                 const double alpha = box(s.turn.du, tight);
                 const double cap = corner_speed(alpha, tight.t2, s.turn.s, s.tolerance);
                 if (tight_pays(i, tight, alpha, cap, machine, s.turn.alpha, s.sparse_cap)) s.tight_cap = cap;

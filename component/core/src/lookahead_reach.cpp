@@ -134,8 +134,7 @@ void Lookahead::rejoin_some() {
     }
     if (count_ >= keep_ && !filling_) return;
     if (gathers()) return;
-    const std::size_t n = rejoin_count();
-    join_waiting(n, !(n > 1 && frozen_.moving));
+    join_waiting(rejoin_count());
 }
 
 std::size_t Lookahead::batch_size() const { return std::clamp(tail_ + 1, std::size_t{1}, rejoin_batch); }
@@ -147,7 +146,7 @@ std::size_t Lookahead::rejoin_count() const {
     return std::min(deferred_, batch ? batch_size() : std::size_t{1});
 }
 
-void Lookahead::join_waiting(std::size_t n, bool whole) {
+void Lookahead::join_waiting(std::size_t n) {
     const std::size_t before = count_;
     if (n > 1) {
         for (std::size_t i = 0; i < before; ++i) snapshot_[i] = seg(i);
@@ -161,7 +160,7 @@ void Lookahead::join_waiting(std::size_t n, bool whole) {
     join_.open = true, join_.undoable = n > 1, join_.done = done;
     join_.before = before;
     join_.bounds = bounds_joined(before);
-    join_step(whole);
+    join_step(!(n > 1 && frozen_.moving));  // a batch under way spreads over periods
 }
 
 bool Lookahead::fills_under_way() const {

@@ -276,9 +276,6 @@ private:
     Regime sparse_regime(const AxisVector& along) const { return sparse_axes(axes_of(along)); }
     Regime sparse_axes(unsigned mask) const;
     unsigned axes_of(const AxisVector& along) const;
-    // A step whose boxes may reach the acceleration limits (StepShape::gapped): a sparse regime's,
-    // or one whose stage is the machine's.
-    bool gapped(const Regime& r) const { return r.sparse || r.t2 == rules_.t2; }
     // The regime of the junction between a block (dense or not, in `before`) and the next: a
     // junction next to a dense block is smoothed as the dense run is, the wider jerk stage of two.
     Regime junction_regime(bool before_dense, const Regime& before, bool after_dense, const Regime& after) const;
@@ -552,7 +549,7 @@ private:
     void rejoin_some();           // at each commit
     std::size_t batch_size() const;    // a batch's blocks: one more than the last join re-planned before them
     std::size_t rejoin_count() const;  // how many waiting blocks join next
-    void join_waiting(std::size_t n, bool whole);  // the first n waiting blocks join (whole: at once)
+    void join_waiting(std::size_t n);  // the first n waiting blocks join (a batch under way: spread)
     // A window still filling under way (blocks come about as fast as the motion uses them): a block
     // waits (filling_) and joins with others in a batch spread over periods.
     bool fills_under_way() const;
