@@ -186,10 +186,13 @@ TEST(RandomMachines, HoldResumeAndAbortOnMoreMachines) { check_rate_changes(32, 
 //   1.4e-9 of it (383.2225850 on 383.2225845), beyond the check's slack of 1e-9: every plan was
 //   refused, and the unchecked one left a block its legs did not cover (a 1.5 mm jump).
 // - 35/1070: stayed at rest for good under an attempted fix of 41/404 (kept as a guard).
+// - 32/381: a hold braked a block to rest at its very end by a ramp (hold_end); the block stayed
+//   in front with no length left, and the resume spun for ever on a start at speed 0.
 TEST(RandomMachines, HoldResumeRegressions) {
     const std::pair<std::uint64_t, int> programs[] = {{34, 1723}, {33, 1222}, {37, 207}, {38, 858}, {36, 1423},
                                                       {33, 962}, {38, 1102}, {35, 350}, {32, 878}, {37, 363},
-                                                      {41, 404}, {35, 1070}, {47, 393}, {56, 634}, {61, 1689}, {32, 295}};
+                                                      {41, 404}, {35, 1070}, {47, 393}, {56, 634}, {61, 1689}, {32, 295},
+                                                      {32, 381}};
     for (const auto& [seed, index] : programs) {
         SCOPED_TRACE("seed " + std::to_string(seed) + ", program " + std::to_string(index));
         check_rate_changes(seed, 0, true, true, index);

@@ -188,6 +188,14 @@ void Lookahead::freeze(const NextStep& n) {
                 s.x0 = s.x1;
                 s.xp = s.x1 = 0.0;
             }
+            // Braked to rest at the block's very end (a hold, hold_end): the block is done. (Kept,
+            // it had no length left to start again from rest, and a resume spun on a start at
+            // speed 0.)
+            if (!(s.b > 0.0) && !(s.length - frozen_.consumed > 1e-12 * s.length)) {
+                frozen_.rest = front.rest;
+                pop_front(true);
+                frozen_.consumed = 0.0;
+            }
             break;
         }
         case StepKind::junction:

@@ -110,18 +110,18 @@ ProfileLegs profile_legs(const SpacingRules& rules, const ProfileInput& block, d
     steps[n] = view(rules, block.in, 0);
     // A ramp's box and jerk stage: the block's own, or those of the junction's regime it shares.
     const double own_t2 = block.t2 < 0.0 ? rules.t2 : block.t2;
-    auto ramp = [&](double dv, double alpha, double t2) {
+    auto ramp = [&](double dv, double alpha, double t2, bool gapped) {
         const bool own = t2 < 0.0;
         return StepView{std::abs(dv) * (own ? block.alpha : alpha), own ? own_t2 : t2, &block.u, dv > 0.0 ? 1.0 : -1.0, false,
-                        block.u_unit_box, dv > 0.0 ? 1 : 2, false, own || t2 == rules.t2};
+                        block.u_unit_box, dv > 0.0 ? 1 : 2, false, own || gapped || t2 == rules.t2};
     };
     if (p != a) {
         speed[n] = a, leg[n] = 0;
-        steps[++n] = ramp(p - a, block.in_alpha, block.in_t2);
+        steps[++n] = ramp(p - a, block.in_alpha, block.in_t2, block.in_gapped);
     }
     if (b != p) {
         speed[n] = p, leg[n] = n == 0 ? 0 : 1;
-        steps[++n] = ramp(b - p, block.out_alpha, block.out_t2);
+        steps[++n] = ramp(b - p, block.out_alpha, block.out_t2, block.out_gapped);
     }
     speed[n] = b, leg[n] = n == 0 ? 0 : 2;
     steps[++n] = view(rules, block.out, 3);

@@ -103,7 +103,10 @@ private:
     // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
     // reach. Sparse steps use A and T2 = max A / J over the axes moving along them (a block's own
     // along it, a corner's along either block; every other axis' box held to J T2), so a slow-jerk
-    // axis that does not move leaves them alone (sparse_regime). A dense run (dense.hpp) uses
+    // axis that does not move leaves them alone (sparse_regime); a block's own steps in no longer
+    // a stage than their acceleration along it needs, and no stage longer than its feed's (every
+    // box within J T2: own_regime, corner_regime, feed_stage). The ramps beside a sparse corner
+    // take the corner's stage where it is longer (sparse_ramps), so they share its moving average. A dense run (dense.hpp) uses
     // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)), the largest over the axes moving in it (the
     // others' boxes held to J T2_d / 2): the run's accelerations may then swing from -h to +h
     // within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
@@ -114,7 +117,7 @@ private:
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
-        bool sparse = false;  // a sparse regime: the acceleration limits, T2 = max A / J of `axes`
+        bool sparse = false;  // a sparse regime: the acceleration limits, T2 at most max A / J of `axes`
         unsigned axes = ~0u;  // a sparse regime's axes (bit a: axis a; all: sparse_)
         bool operator==(const Regime&) const = default;
     };
@@ -275,6 +278,22 @@ private:
     // other axis' box held to J T2; sparse_ where that is every axis' T2 or none limits jerk.
     Regime sparse_regime(const AxisVector& along) const { return sparse_axes(axes_of(along)); }
     Regime sparse_axes(unsigned mask) const;
+    // A sparse block's own regime (its start, ramps and stop, all along u): sparse_regime(u) in the
+    // shorter of the stage its acceleration along u needs, a_u max_a |u_a| / J_a = a_u u_jerk, and
+    // its feed_stage.
+    Regime own_regime(const Segment& s) const;
+    // A corner's between sparse blocks s and n: sparse_regime of both blocks' axes, in at most the
+    // longer of their feed stages.
+    Regime corner_regime(const Segment& s, const Segment& n) const;
+    // sqrt(2 feed_max u_jerk): the stage at which a step along u of twice the block's feed (a
+    // reversal) takes T1 = T2 / 2 (a = sqrt(2 feed / u_jerk)). A longer stage only adds to its
+    // steps' kernels; so raising an acceleration limit beyond it changes nothing.
+    double feed_stage(const Segment& s) const;
+    Regime capped(Regime r, double t2) const;  // r in a stage of at most t2, every box within J t2
+    static Regime stretched(Regime r, double t2) {  // r's boxes in a longer stage
+        r.t2 = t2;
+        return r;
+    }
     unsigned axes_of(const AxisVector& along) const;
     // The regime of the junction between a block (dense or not, in `before`) and the next: a
     // junction next to a dense block is smoothed as the dense run is, the wider jerk stage of two.
@@ -282,8 +301,18 @@ private:
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
-    Regime in_ramp_regime(std::size_t i) const { return seg(i).in_ramp.t2 < 0.0 ? seg(i).regime : ramp_on_block(i, seg(i).in_ramp); }
-    Regime out_ramp_regime(std::size_t i) const { return seg(i).out_ramp.t2 < 0.0 ? seg(i).regime : ramp_on_block(i, seg(i).out_ramp); }
+    Regime in_ramp_regime(std::size_t i) const { return shares(seg(i).in_ramp) ? ramp_on_block(i, seg(i).in_ramp) : sparse_ramps(i); }
+    Regime out_ramp_regime(std::size_t i) const { return shares(seg(i).out_ramp) ? ramp_on_block(i, seg(i).out_ramp) : sparse_ramps(i); }
+    static bool shares(const Regime& ramp) { return ramp.t2 >= 0.0 && !ramp.sparse; }  // a dense run's regime
+    // A block's ramps outside a dense run's regime: its own boxes, in the longest sparse corner
+    // stage beside it (set_junction), or in its own.
+    Regime sparse_ramps(std::size_t i) const {
+        const Segment& s = seg(i);
+        double t2 = s.regime.t2;
+        for (const Regime* r : {&s.in_ramp, &s.out_ramp})
+            if (r->t2 >= 0.0 && r->sparse) t2 = std::max(t2, r->t2);
+        return stretched(s.regime, t2);
+    }
     // A ramp on block i sharing a corner's regime; where the block shares the corners at both its
     // ends, each ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
     Regime ramp_on_block(std::size_t i, const Regime& ramp) const;

@@ -71,6 +71,9 @@ struct ProfileInput {
     // ramp p -> b the exit's. in_t2 / out_t2 < 0: alpha and the block's own jerk stage (t2).
     double in_alpha = 0.0, in_t2 = -1.0;
     double out_alpha = 0.0, out_t2 = -1.0;
+    // A ramp in a sparse corner's longer stage, with the block's own boxes (their jerk only
+    // falls): it shares the corner's moving average and keeps its jerk gaps (StepShape::gapped).
+    bool in_gapped = false, out_gapped = false;
     double t2 = -1.0;  // the block's own jerk stage (its sparse regime's; < 0: the machine's)
     AxisVector u = AxisVector::Zero();
     double u_unit_box = -1.0;    // SpacingRules::unit_box(u), where the caller knows it (< 0: not)
