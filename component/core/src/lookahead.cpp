@@ -192,11 +192,11 @@ double Lookahead::feed_stage(const Segment& s) const {
 Lookahead::Regime Lookahead::own_regime(const Segment& s) const {
     const Regime r = sparse_regime(s.u);
     const double alpha = box(s.u, r);  // 1 / a_u
-    return capped(r, std::min(alpha > 0.0 ? s.u_jerk / alpha : infinity, feed_stage(s)));
+    return capped(r, std::min(alpha > 0.0 ? s.u_jerk / alpha : infinity, s.feed_t2));
 }
 
 Lookahead::Regime Lookahead::corner_regime(const Segment& s, const Segment& n) const {
-    return capped(sparse_regime(s.u.cwiseAbs() + n.u.cwiseAbs()), std::max(feed_stage(s), feed_stage(n)));
+    return capped(sparse_regime(s.u.cwiseAbs() + n.u.cwiseAbs()), std::max(s.feed_t2, n.feed_t2));
 }
 
 Lookahead::Regime Lookahead::junction_regime(bool before_dense, const Regime& before, bool after_dense,
@@ -314,7 +314,7 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const bool entry = i > 0 && !entry_is_stop(i), exit = !exit_is_stop(i);
     const double in = entry ? std::min(seg(i - 1).tight_cap, s.feed_max) : 0.0;
     const double out = exit ? std::min(s.tight_cap, s.feed_max) : 0.0;
-    const Regime own = own_regime(s);
+    const Regime& own = s.own;
     const double alpha = box(s.u, own);  // 1 / the acceleration along u
     // v^2 changes by 2 L / alpha at most over the block: the higher end comes down to what it allows.
     const double reach = alpha > 0.0 ? 2.0 * length / alpha : infinity;
@@ -402,7 +402,7 @@ void Lookahead::classify(std::size_t i) {
     const bool inside = i > 0 && !entry_is_stop(i) && i + 1 < count_ && s.kind != Kind::stop;
     s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
               ((inside && entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
-    s.regime = s.dense ? dense : own_regime(s);
+    s.regime = s.dense ? dense : s.own;
     s.alpha = box(s.u, s.regime);
 }
 
@@ -1136,7 +1136,9 @@ void Lookahead::arrive(Segment& s) const {
     s.u_jerk = 0.0;
     for (int a = 0; a < limits_.axes; ++a)
         if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
-    s.regime = own_regime(s);
+    s.feed_t2 = feed_stage(s);
+    s.own = own_regime(s);
+    s.regime = s.own;
     s.alpha = box(s.u, s.regime);
     // (Short against the stage its corners take, at least its axes', not its own.)
     s.short_block = s.length < s.feed_max * (s.feed_max * s.alpha + corner_regime(s, s).t2);

@@ -136,6 +136,8 @@ private:
         bool ramped_on = false;    // planned from its start (from rest or just started) to a plateau above it
         bool one_speed_start = false;  // that ramp on failed the check at its exit: it keeps its start's speed
         Regime regime;           // of its own steps (start, stop, ramps)
+        Regime own;              // own_regime(): its regime where sparse (found on arrival)
+        double feed_t2 = 0.0;    // feed_stage()
         // A corner in a dense run's regime (a dense neighbour) shares its jerk stage with the
         // ramps beside it on this block: the ramp after the entry (in_ramp) and the one before
         // the exit (out_ramp) are smoothed in the corner's regime, their boxes up to J T2, and
