@@ -393,13 +393,13 @@ void Lookahead::classify(std::size_t i) {
     // Between two stops a sized start and stop are the fastest plan there is, the jerk-limited
     // rest-to-rest move. (At the end of the blocks known so far too: the next block classifies it
     // again, and a start waits for the junction after its block to be settled.)
-    const bool alone = sized_ && entry_is_stop(i) && (i + 1 == count_ || s.kind == Kind::stop);
+    const bool alone = sized_ && entry_is_stop(i) && exit_is_stop(i);
     // Between two smooth corners a short block is dense without comparing estimates: a run goes
     // on through it. Next to a stop it is the run's end, and the estimates decide (taken as
     // dense there, a block ending at a stop kept its entry corner's speed over its whole length:
     // firtp_cliffs seed 3 program 24, +46 % with every tolerance a quarter larger; seed 5
     // program 22 took 1.795 s, now 0.230 s).
-    const bool inside = i > 0 && !entry_is_stop(i) && i + 1 < count_ && s.kind != Kind::stop;
+    const bool inside = !entry_is_stop(i) && !exit_is_stop(i);
     s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
               ((inside && entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : s.own;

@@ -106,14 +106,14 @@ private:
     // axis that does not move leaves them alone (sparse_regime); a block's own steps in no longer
     // a stage than their acceleration along it needs, and no stage longer than its feed's (every
     // box within J T2: own_regime, corner_regime, feed_stage). The ramps beside a sparse corner
-    // take the corner's stage where it is longer (sparse_ramps), so they share its moving average. A dense run (dense.hpp) uses
-    // T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)), the largest over the axes moving in it (the
-    // others' boxes held to J T2_d / 2): the run's accelerations may then swing from -h to +h
-    // within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
-    // h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next to a corner in a run's regime share
-    // it (Segment::in_ramp), and so do a corner's between sparse blocks where it takes its
-    // tolerance's regime (tight_pays); a sparse block's start and stop are sized to themselves
-    // (sized()).
+    // take the corner's stage where it is longer (sparse_ramps), so they share its moving
+    // average. A dense run (dense.hpp) uses T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)), the
+    // largest over the axes moving in it (the others' boxes held to J T2_d / 2): the run's
+    // accelerations may then swing from -h to +h within T2_d, and smoothing a curve at
+    // acceleration h by T2_d moves it by h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next
+    // to a corner in a run's regime share it (Segment::in_ramp), and so do a corner's between
+    // sparse blocks where it takes its tolerance's regime (tight_pays); a sparse block's start and
+    // stop are sized to themselves (sized()).
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
@@ -297,8 +297,9 @@ private:
         return r;
     }
     unsigned axes_of(const AxisVector& along) const;
-    // The regime of the junction between a block (dense or not, in `before`) and the next: a
-    // junction next to a dense block is smoothed as the dense run is, the wider jerk stage of two.
+    // The regime of the junction between a block (in `before`) and the next where either is
+    // dense: smoothed as the dense run is, the wider jerk stage of two (between sparse blocks:
+    // corner_regime).
     Regime junction_regime(bool before_dense, const Regime& before, bool after_dense, const Regime& after) const;
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
