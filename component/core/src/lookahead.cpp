@@ -185,8 +185,12 @@ Lookahead::Regime Lookahead::capped(Regime r, double t2) const {
     return r;
 }
 
-double Lookahead::feed_stage(const Segment& s) const {
-    return s.u_jerk > 0.0 && std::isfinite(s.feed_max) ? std::sqrt(2.0 * s.feed_max * s.u_jerk) : infinity;
+double Lookahead::feed_stage(const Segment& s) const { return reach_stage(s, s.length); }
+
+double Lookahead::reach_stage(const Segment& s, double length) const {
+    if (!(s.u_jerk > 0.0)) return infinity;
+    const double v = std::min(s.feed_max, std::cbrt(length * length / (4.0 * s.u_jerk)));  // (its reach)
+    return std::isfinite(v) ? std::sqrt(2.0 * v * s.u_jerk) : infinity;
 }
 
 Lookahead::Regime Lookahead::own_regime(const Segment& s) const {
@@ -195,8 +199,10 @@ Lookahead::Regime Lookahead::own_regime(const Segment& s) const {
     return capped(r, std::min(alpha > 0.0 ? s.u_jerk / alpha : infinity, s.feed_t2));
 }
 
-Lookahead::Regime Lookahead::corner_regime(const Segment& s, const Segment& n) const {
-    return capped(sparse_regime(s.u.cwiseAbs() + n.u.cwiseAbs()), std::max(s.feed_t2, n.feed_t2));
+Lookahead::Regime Lookahead::corner_regime(const Segment& s, const Segment& n, bool next_to_run) const {
+    const double t2 = next_to_run ? std::max(reach_stage(s, s.length + n.length), reach_stage(n, s.length + n.length))
+                               : std::max(s.feed_t2, n.feed_t2);
+    return capped(sparse_regime(s.u.cwiseAbs() + n.u.cwiseAbs()), t2);
 }
 
 Lookahead::Regime Lookahead::junction_regime(bool before_dense, const Regime& before, bool after_dense,
@@ -321,14 +327,15 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const double v0 = std::min(in, std::sqrt(out * out + reach)), v1 = std::min(out, std::sqrt(v0 * v0 + reach));
     const double peak = std::min(s.feed_max, std::sqrt(0.5 * (reach + v0 * v0 + v1 * v1)));
     // The jerk stage each end's step adds beyond its box: at a corner, the corner's stage (the
-    // ramps beside it share it: sparse_ramps); at a start or stop sized to itself, its own, from
+    // ramps beside it share it: sparse_ramps; beside a dense block, corner_regime's longer one);
+    // at a start or stop sized to itself, its own, from
     // the peak (far below T2 where the peak is slow: seed 7 program 260, a 0.05 mm G61 block on an
     // axis with T2 = 93 ms, estimated at T2 and classified dense: +245 % with every tolerance a
     // quarter larger).
     const bool sized_ends = sized_ && !s.hold_split && !s.hold_end && peak > 0.0 && std::isfinite(peak);
     const double sized_jerk = sized_ends ? std::min(own.t2, std::max(0.0, sized_kernel(peak, alpha, s.u_jerk).width() - peak * alpha)) : own.t2;
-    const double entry_jerk = entry ? std::max(own.t2, corner_regime(seg(i - 1), s).t2) : sized_jerk;
-    const double exit_jerk = exit ? std::max(own.t2, corner_regime(s, seg(i + 1)).t2) : sized_jerk;
+    const double entry_jerk = entry ? std::max(own.t2, corner_regime(seg(i - 1), s, seg(i - 1).dense).t2) : sized_jerk;
+    const double exit_jerk = exit ? std::max(own.t2, corner_regime(s, seg(i + 1), seg(i + 1).dense).t2) : sized_jerk;
     const double jerk_time = 0.5 * (entry_jerk + exit_jerk);
     double corners = s.feed_max;
     if (jerk_time > 0.0) corners = std::min(corners, length / jerk_time);

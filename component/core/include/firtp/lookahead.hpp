@@ -285,12 +285,21 @@ private:
     // its feed_stage.
     Regime own_regime(const Segment& s) const;
     // A corner's between sparse blocks s and n: sparse_regime of both blocks' axes, in at most the
-    // longer of their feed stages.
-    Regime corner_regime(const Segment& s, const Segment& n) const;
-    // sqrt(2 feed_max u_jerk): the stage at which a step along u of twice the block's feed (a
-    // reversal) takes T1 = T2 / 2 (a = sqrt(2 feed / u_jerk)). A longer stage only adds to its
-    // steps' kernels; so raising an acceleration limit beyond it changes nothing.
+    // longer of their feed stages. As sparse_estimate() judges a block next to a dense one
+    // (next_to_run): in at most the stage of their reach over both blocks' lengths, as long or
+    // longer. (Judged in the corner's own stage, the two 0.025 mm chords at the 90 degree turn
+    // between two arcs of arcs.ngc, each beside a dense run, were estimated faster sparse, 3.52
+    // against 3.24 mm/s, and pinned the runs: 6.272 -> 6.309 s at jerk 1e5.)
+    Regime corner_regime(const Segment& s, const Segment& n, bool next_to_run = false) const;
+    // sqrt(2 v u_jerk): the stage at which a step along u of twice the block's speed v (a
+    // reversal) takes T1 = T2 / 2 (a = sqrt(2 v / u_jerk)). A longer stage only adds to its
+    // steps' kernels; so raising an acceleration limit beyond it changes nothing. v is its feed,
+    // or, on a block too short to reach it, its reach: the top speed of a move from rest to rest
+    // over its length L with the jerk alone, L = 2 v sqrt(v u_jerk) (reach_stage). (Sized to the
+    // feed, a short block's stage grew with an acceleration limit up to the feed's, far longer
+    // than its steps need: issue 13's cliffs, docs/BENCHMARKS.md.)
     double feed_stage(const Segment& s) const;
+    double reach_stage(const Segment& s, double length) const;  // feed_stage() as if s were `length` long
     Regime capped(Regime r, double t2) const;  // r in a stage of at most t2, every box within J t2
     static Regime stretched(Regime r, double t2) {  // r's boxes in a longer stage
         r.t2 = t2;
