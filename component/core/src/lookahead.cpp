@@ -328,10 +328,11 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const double peak = std::min(s.feed_max, std::sqrt(0.5 * (reach + v0 * v0 + v1 * v1)));
     // The jerk stage each end's step adds beyond its box: at a corner, the corner's stage (the
     // ramps beside it share it: sparse_ramps; beside a dense block, corner_regime's longer one);
-    // at a start or stop sized to itself, its own, from
-    // the peak (far below T2 where the peak is slow: seed 7 program 260, a 0.05 mm G61 block on an
-    // axis with T2 = 93 ms, estimated at T2 and classified dense: +245 % with every tolerance a
-    // quarter larger).
+    // at a start or stop sized to itself, its own, from the peak (far below T2 where the peak is
+    // slow: seed 7 program 260, a 0.05 mm G61 block on an axis with T2 = 93 ms, estimated at T2
+    // and classified dense: +245 % with every tolerance a quarter larger). (On arrival the next
+    // block is not classed yet, link(): its side counts as dense only where a block is classed
+    // again later, as a check's remedy does.)
     const bool sized_ends = sized_ && !s.hold_split && !s.hold_end && peak > 0.0 && std::isfinite(peak);
     const double sized_jerk = sized_ends ? std::min(own.t2, std::max(0.0, sized_kernel(peak, alpha, s.u_jerk).width() - peak * alpha)) : own.t2;
     const double entry_jerk = entry ? std::max(own.t2, corner_regime(seg(i - 1), s, seg(i - 1).dense).t2) : sized_jerk;
