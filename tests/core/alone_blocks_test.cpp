@@ -130,3 +130,47 @@ TEST(AloneBlocks, ALoneBlockIsSizedToItselfWhereAnAxisHasNoJerkLimit) {
     EXPECT_LE(cycle[1], cycle[0] + p.period);
     EXPECT_LT(cycle[0], 0.03);  // 0.021 s (0.083 s before)
 }
+
+// An arc of 0.64 mm chords in XY with G61 at its 8th and 10th chord (firtp_cliffs seed 2 program
+// 169). A G61 block has no tolerance at its exit; its dense regime took none either, and with it
+// the machine's T2 = A / J, 0.2 s on axis 1. Once a quarter larger tolerance made the dense
+// estimate win, the G61 block and the one between the stops crawled at 7.7 mm/s behind that
+// stage: 0.611 -> 0.949 s for the program (+55 %), 0.282 -> 0.625 s for these chords. Now the G61
+// block keeps its entry corner's: 0.2525 and 0.251 s.
+TEST(AloneBlocks, AG61ChordAfterARunKeepsItsEntryCornersTolerance) {
+    const PlannerParameters p = four_axes(0.0005, 1.2, {{{564.239, 5587.24, 1.7964e6}, {109.425, 29876.9, 129498.0},
+                                                         {321.025, 5145.75, 0.0}, {487.715, 27064.6, 24528.4}}});
+    const double xy[12][2] = {{-9.442641192420588, -3.1792853548985489},  {-10.017547199555226, -3.4552932132201368},
+                              {-10.523224230632893, -3.8438649506576921}, {-10.93795888958452, -4.3283155854586397},
+                              {-11.243942778243012, -4.8878431672418721}, {-11.428037175731456, -5.4984219972942503},
+                              {-11.482337205377396, -6.1338342742257037}, {-11.40451126424496, -6.7667958668848582},
+                              {-11.197901140432874, -7.3701278746824883}, {-10.871378519175986, -7.9179236693927928},
+                              {-10.438964039271651, -8.3866613065245126}, {-9.9192252572651078, -8.7562135401439534}};
+    const auto at = [&xy](int k) {
+        AxisVector v = AxisVector::Zero();
+        v.head<4>() << xy[k][0], xy[k][1], 30.77285489909119, 8.6081994701011872;
+        return v;
+    };
+    double cycle[2] = {0.0, 0.0};
+    for (const int looser : {0, 1}) {
+        const double scale = looser ? 1.25 : 1.0;
+        SCOPED_TRACE(looser ? "tolerance a quarter larger" : "tolerance as programmed");
+        std::vector<Block> blocks;
+        for (int k = 1; k < 12; ++k) {
+            Block b;
+            b.target = at(k);
+            b.feed = 219.859;
+            b.tolerance = (k == 11 ? 0.00738373 : 0.139128) * scale;
+            b.line = k;
+            if (k == 8 || k == 10) b.termination = Termination::exact_stop;
+            blocks.push_back(b);
+        }
+        const Trajectory t = plan_trajectory(p, at(0), blocks);
+        const test::CaseRatios r = test::case_ratios(p, blocks, t, at(0));
+        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+        cycle[looser] = t.cycle_time;
+        std::printf("tolerance x%.2f: cycle %.5f s\n", scale, t.cycle_time);
+    }
+    EXPECT_LE(cycle[1], cycle[0] + p.period);
+    EXPECT_LT(cycle[1], 0.27);
+}

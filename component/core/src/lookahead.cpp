@@ -124,7 +124,7 @@ Lookahead::Regime Lookahead::dense_regime(double epsilon, const AxisVector& alon
             if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
             // Without a tolerance the swing from -h to +h needs no more than the sparse jerk time.
             regime_h_[i] = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
-                                                  : 0.5 * l.max_acceleration;
+                                                  : l.max_acceleration;
             regime_all_ |= 1u << i;
         }
         regime_mask_ = ~0u;
@@ -367,7 +367,7 @@ double Lookahead::sampled_speed(double alpha, double t2, double s, double du, do
 // tolerance for the step itself (lookahead.hpp, Regime).
 double Lookahead::dense_estimate(std::size_t i) const {
     double v = seg(i).feed_max;
-    const Regime own = dense_regime(seg(i).tolerance, seg(i).u);
+    const Regime own = dense_regime(dense_epsilon(i), seg(i).u);
     for (std::size_t j : {i - 1, i}) {
         if (j >= i + 1 || j + 1 >= count_ || seg(j).kind == Kind::stop) continue;  // (i - 1 wraps for i = 0)
         const std::size_t k = j == i ? i + 1 : j;  // the neighbour across junction j
@@ -384,6 +384,15 @@ double Lookahead::dense_estimate(std::size_t i) const {
     return v;
 }
 
+// The tolerance a block's dense regime keeps: its own, at its exit corner; where it ends in an
+// exact stop (no tolerance), its entry corner's. (Taken as unbounded, the regime's T2 grew to the
+// machine's A / J, 0.2 s on a 0.64 mm G61 block: firtp_cliffs seed 2 program 169, +55 % with
+// every tolerance a quarter larger.)
+double Lookahead::dense_epsilon(std::size_t i) const {
+    const Segment& s = seg(i);
+    return std::isfinite(s.tolerance) || i == 0 || entry_is_stop(i) ? s.tolerance : seg(i - 1).tolerance;
+}
+
 void Lookahead::classify(std::size_t i) {
     Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return;  // under way: it stays what it was planned as
@@ -393,10 +402,10 @@ void Lookahead::classify(std::size_t i) {
     const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || (smooth(i) && !slower_long(i + 1, i));
     // Dense: inside one dense kernel at its feed (several blocks share a window); a longer block
     // held at one speed would crawl through its whole length behind a slow junction.
-    const Regime dense = dense_regime(s.tolerance, s.u);
+    const Regime dense = dense_regime(dense_epsilon(i), s.u);
     // (Judged in the stage of every axis: in its own, narrower, a block leaves the window for the
     // sparse class, whose T2 is every axis' too: firtp_cliffs seed 7 program 160, 2.5x slower.)
-    const Regime wide = dense_regime(s.tolerance, AxisVector::Ones());
+    const Regime wide = dense_regime(dense_epsilon(i), AxisVector::Ones());
     const bool in_window = s.length < s.feed_max * (wide.t2 + s.feed_max * box(s.u, wide));
     // Between two stops a sized start and stop are the fastest plan there is, the jerk-limited
     // rest-to-rest move. (At the end of the blocks known so far too: the next block classifies it

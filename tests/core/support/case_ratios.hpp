@@ -29,9 +29,10 @@ struct MeasuredCase {
     }
 };
 
-inline MeasuredCase measure_case(const PlannerParameters& p, const std::vector<Block>& blocks, const Trajectory& t) {
+inline MeasuredCase measure_case(const PlannerParameters& p, const std::vector<Block>& blocks, const Trajectory& t,
+                                 const AxisVector& start = AxisVector::Zero()) {
     MeasuredCase c;
-    c.points.push_back(AxisVector::Zero());
+    c.points.push_back(start);
     for (const Block& b : blocks)
         if ((b.target - c.points.back()).norm() >= min_block_length) c.points.push_back(b.target), c.ending.push_back(&b);
     c.period = p.period;
@@ -62,9 +63,10 @@ struct CaseRatios {
     }
 };
 
-inline CaseRatios case_ratios(const PlannerParameters& p, const std::vector<Block>& blocks, const Trajectory& t) {
+inline CaseRatios case_ratios(const PlannerParameters& p, const std::vector<Block>& blocks, const Trajectory& t,
+                              const AxisVector& start = AxisVector::Zero()) {
     CaseRatios r;
-    const MeasuredCase c = measure_case(p, blocks, t);
+    const MeasuredCase c = measure_case(p, blocks, t, start);
     r.finite = c.per_period.finite;
     r.end_exact = !blocks.empty() && c.per_period.end_position == blocks.back().target;
     r.at_rest = !t.samples.empty() && t.samples.back().velocity == AxisVector::Zero();
