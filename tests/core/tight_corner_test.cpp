@@ -144,3 +144,77 @@ TEST(TightCorner, TheRegimeIsChosenForTheRateTheProgramRunsAt) {
 }
 
 }  // namespace
+
+namespace {
+
+// A random machine of firtp_cliffs: each axis' {velocity, acceleration, jerk}.
+PlannerParameters random_machine(double period, double max_rate, const std::vector<AxisLimits>& axes) {
+    PlannerParameters p;
+    p.period = period;
+    p.max_rate = max_rate;
+    p.limits.axes = static_cast<int>(axes.size());
+    for (std::size_t a = 0; a < axes.size(); ++a) p.limits.axis[a] = axes[a];
+    return p;
+}
+
+std::vector<Block> random_blocks(const std::vector<std::vector<double>>& to, const std::vector<double>& feed,
+                                 const std::vector<double>& tolerance) {
+    std::vector<Block> blocks(to.size());
+    for (std::size_t k = 0; k < to.size(); ++k) {
+        for (std::size_t a = 0; a < to[k].size(); ++a) blocks[k].target[static_cast<int>(a)] = to[k][a];
+        blocks[k].feed = feed[k];
+        blocks[k].tolerance = tolerance[k];
+        blocks[k].line = static_cast<int>(k) + 1;
+    }
+    return blocks;
+}
+
+}  // namespace
+
+// An 88 degree corner after a 7.4 mm block at 0.0012 mm (firtp_cliffs seed 3
+// program 192). With the velocity limits a quarter higher the block became short (too short to
+// reach its feed and come back), and a corner beside a short block was never stopped at: it blended
+// at 0.2 mm/s, 0.253 -> 0.293 s (+16 %). Now a stop is weighed there too.
+TEST(TightCorner, BesideAShortBlockAStopIsWeighedToo) {
+    const std::vector<Block> blocks = random_blocks({{-3.6804548498153991, 3.9723898515072347, 5.0278818346029768},
+                                                     {-3.7495215811752836, 10.657288442690197, 0.19524312854482684},
+                                                     {-3.7403081142018761, 10.667127556277817, 0.19116756500376553}},
+                                                    {137.683, 99.7112, 137.683}, {0.00120197, 0.00564011, 0.00120197});
+    double cycle[2] = {0.0, 0.0};
+    for (const int raised : {0, 1}) {
+        PlannerParameters p = random_machine(0.001, 1.0, {{103.015, 6903.52, 110476.0}, {482.393, 1911.59, 2.46651e7},
+                                                          {73.9659, 7774.58, 1.49195e7}});
+        if (raised)
+            for (int a = 0; a < 3; ++a) p.limits.axis[a].max_velocity *= 1.25;
+        SCOPED_TRACE(raised ? "velocity limits a quarter higher" : "velocity limits as drawn");
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+        const test::CaseRatios r = test::case_ratios(p, blocks, t);
+        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+        cycle[raised] = t.cycle_time;
+        std::printf("%s: cycle %.4f s, first corner %s\n", raised ? "raised" : "as drawn", t.cycle_time,
+                    describe(t.corners.at(0).bound));
+    }
+    EXPECT_LE(cycle[1], cycle[0] + 0.001);
+    EXPECT_LT(cycle[1], 0.27);
+}
+
+// The stop weighed beside a short block must stay a stop: a dense block beside it turned it back
+// into a corner at a speed its dense estimate had not seen (firtp_cliffs seed 7 program 9: a
+// 4.8 mm block after a tight 82 degree corner crawled at 0.41 mm/s, 12.05 s instead of 0.63).
+TEST(TightCorner, ABlockBesideAStopThatPaysStaysSparse) {
+    const PlannerParameters p = random_machine(0.00025, 2.0, {{371.393, 15055.5, 9.26587e7}, {437.134, 18783.9, 0.0},
+                                                              {479.697, 4430.29, 4.45347e6}, {254.143, 9664.19, 21741.1},
+                                                              {296.79, 9722.39, 46063.9}});
+    const std::vector<Block> blocks = random_blocks(
+        {{3.1582240130655213, 3.69570463091658, 3.477644879384421, -2.5867477252725002, -1.3028276242657653},
+         {6.3776816519421118, -0.32338753697411038, 3.5957906452353727, -0.88576672601767581, -0.088575790731080462},
+         {7.2392393349002759, -1.3989350745312403, 3.6274075831471206, -0.43056792769299157, 0.23636962355083951},
+         {8.9252900075678454, 0.096720000390174699, 7.3506792416082387, 0.82807945335443545, 1.7217155902818251},
+         {11.172620038477211, 2.0902725194464109, 12.313412774435552, 2.5057253886797777, 3.7015271412854283}},
+        {102.996, 102.996, 102.996, 102.996, 102.996}, {0.274784, 0.274784, 0.00229789, 0.0358594, 0.274784});
+    const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+    const test::CaseRatios r = test::case_ratios(p, blocks, t);
+    EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+    std::printf("cycle %.4f s\n", t.cycle_time);
+    EXPECT_LT(t.cycle_time, 0.65);
+}

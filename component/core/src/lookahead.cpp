@@ -417,7 +417,12 @@ void Lookahead::classify(std::size_t i) {
     // firtp_cliffs seed 3 program 24, +46 % with every tolerance a quarter larger; seed 5
     // program 22 took 1.795 s, now 0.230 s).
     const bool inside = !entry_is_stop(i) && !exit_is_stop(i);
-    s.dense = s.short_block && in_window && !s.sparse_only && !alone &&
+    // A block beside a stop that pays (stop_pays) stays sparse: dense, that junction became a corner
+    // again, at a speed its dense estimate had not seen (firtp_cliffs seed 7 program 9: 4.8 mm at
+    // 0.41 mm/s, 12.05 s instead of 0.63).
+    const bool paid_stop = (i > 0 && seg(i - 1).kind == Kind::stop && stop_bound(seg(i - 1)) == CornerBound::stop_pays) ||
+                           (s.kind == Kind::stop && stop_bound(s) == CornerBound::stop_pays);
+    s.dense = s.short_block && in_window && !s.sparse_only && !alone && !paid_stop &&
               ((inside && entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : s.own;
     s.alpha = box(s.u, s.regime);
@@ -606,15 +611,17 @@ double Lookahead::stop_loss(std::size_t i) const {
     return loss;
 }
 
-// A corner between long sparse blocks stops where passing it at v would lose more (a 30 degree
+// A corner between sparse blocks stops where passing it at v would lose more (a 30 degree
 // turn at 0.6 mm/s between 30 mm blocks at 200 mm/s keeps T2 / 2 more between its ramps than a
 // stop and took 0.499 s against 0.474), or no less than a period less: the estimates are good to
 // about a period, and a tie goes to the stop (TightCorner.*: a 135 degree turn at 0.02 mm blended
-// in 0.285 s against the stop's 0.283).
+// in 0.285 s against the stop's 0.283). Short blocks too: held to a blend, a corner beside a
+// 7.4 mm block passed at 0.2 mm/s where a stop took 40 ms less (firtp_cliffs seed 3 program
+// 192, +16 % with the velocity limits a quarter higher: the block became short).
 bool Lookahead::stop_pays(std::size_t i, double v) const {
     const Segment& s = seg(i);
     const Segment& n = seg(i + 1);
-    if (!sized(i) || !sized(i + 1) || s.dense || n.dense || s.short_block || n.short_block) return false;
+    if (!sized(i) || !sized(i + 1) || s.dense || n.dense) return false;
     return stop_loss(i) < blend_loss(i, s.junction, s.turn_alpha, v) + parameters_.period;
 }
 
