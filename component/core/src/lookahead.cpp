@@ -393,6 +393,15 @@ double Lookahead::dense_epsilon(std::size_t i) const {
     return std::isfinite(s.tolerance) || i == 0 || entry_is_stop(i) ? s.tolerance : seg(i - 1).tolerance;
 }
 
+// A run that a stop asked for ends one block beyond block i: before it (the block before i starts
+// after one) or after it (the block after i ends in G61). Block i is then not dense merely for
+// lying between smooth corners: held at one speed, a 25 mm block crawled at the speed at which
+// the next 0.86 mm block could stop (firtp_cliffs seed 1 program 127: 1.309 -> 1.488 s with the
+// velocity limits a quarter higher, which made it short). The estimates decide, as at a stop.
+bool Lookahead::run_ends_next(std::size_t i) const {
+    return (i >= 2 && seg(i - 2).kind == Kind::stop && stops_whatever_follows(seg(i - 2))) || (i + 1 < count_ && seg(i + 1).exact_stop);
+}
+
 void Lookahead::classify(std::size_t i) {
     Segment& s = seg(i);
     if (i == 0 && frozen_.moving) return;  // under way: it stays what it was planned as
@@ -423,7 +432,7 @@ void Lookahead::classify(std::size_t i) {
     const bool paid_stop = (i > 0 && seg(i - 1).kind == Kind::stop && stop_bound(seg(i - 1)) == CornerBound::stop_pays) ||
                            (s.kind == Kind::stop && stop_bound(s) == CornerBound::stop_pays);
     s.dense = s.short_block && in_window && !s.sparse_only && !alone && !paid_stop &&
-              ((inside && entry_smooth && exit_smooth) || dense_estimate(i) > sparse_estimate(i));
+              ((inside && entry_smooth && exit_smooth && !run_ends_next(i)) || dense_estimate(i) > sparse_estimate(i));
     s.regime = s.dense ? dense : s.own;
     s.alpha = box(s.u, s.regime);
 }
