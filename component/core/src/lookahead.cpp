@@ -420,9 +420,12 @@ void Lookahead::classify(std::size_t i) {
     // rest-to-rest move. (At the end of the blocks known so far too: the next block classifies it
     // again, and a start waits for the junction after its block to be settled.)
     const bool alone = sized_ && entry_is_stop(i) && exit_is_stop(i);
-    // Between two smooth corners a short block is dense without comparing estimates: a run goes
-    // on through it. Next to a stop it is the run's end, and the estimates decide (taken as
-    // dense there, a block ending at a stop kept its entry corner's speed over its whole length:
+    // Between two smooth corners a short block is dense unless its sparse estimate is faster: a
+    // tie (both at its feed) goes dense, a run goes on through it. (Dense there whatever the
+    // estimates, a 1.54 mm block after one of 0.02 mm ran at 6.4 mm/s where sparse it reached
+    // 43: firtp_cliffs seed 31 program 61, +15 % with every tolerance a quarter larger. A tie
+    // taken sparse slowed polygon360.ngc at jerk 5e6 from 0.564 to 0.909 s.) Next to a stop it is
+    // the run's end, and the estimates decide (taken as dense there, a block ending at a stop kept its entry corner's speed over its whole length:
     // firtp_cliffs seed 3 program 24, +46 % with every tolerance a quarter larger; seed 5
     // program 22 took 1.795 s, now 0.230 s).
     const bool inside = !entry_is_stop(i) && !exit_is_stop(i);
@@ -431,8 +434,11 @@ void Lookahead::classify(std::size_t i) {
     // 0.41 mm/s, 12.05 s instead of 0.63).
     const bool paid_stop = (i > 0 && seg(i - 1).kind == Kind::stop && stop_bound(seg(i - 1)) == CornerBound::stop_pays) ||
                            (s.kind == Kind::stop && stop_bound(s) == CornerBound::stop_pays);
-    s.dense = s.short_block && in_window && !s.sparse_only && !alone && !paid_stop &&
-              ((inside && entry_smooth && exit_smooth && !run_ends_next(i)) || dense_estimate(i) > sparse_estimate(i));
+    s.dense = false;
+    if (s.short_block && in_window && !s.sparse_only && !alone && !paid_stop) {
+        const double dense_v = dense_estimate(i), sparse_v = sparse_estimate(i);
+        s.dense = dense_v > sparse_v || (dense_v == sparse_v && inside && entry_smooth && exit_smooth && !run_ends_next(i));
+    }
     s.regime = s.dense ? dense : s.own;
     s.alpha = box(s.u, s.regime);
 }
