@@ -124,7 +124,7 @@ Lookahead::Regime Lookahead::dense_regime(double epsilon, const AxisVector& alon
             if (!(l.max_jerk > 0.0) || !(l.max_acceleration > 0.0)) continue;
             // Without a tolerance the swing from -h to +h needs no more than the sparse jerk time.
             regime_h_[i] = std::isfinite(epsilon) ? std::min(l.max_acceleration, std::cbrt(3.0 * epsilon * l.max_jerk * l.max_jerk))
-                                                  : l.max_acceleration;
+                                                  : 0.5 * l.max_acceleration;
             regime_all_ |= 1u << i;
         }
         regime_mask_ = ~0u;
