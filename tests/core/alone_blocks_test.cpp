@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <vector>
 
@@ -26,16 +25,6 @@ std::vector<Block> reversals(double tolerance) {
     for (int i = 0; i < 40; ++i) blocks.push_back(line_to(xyz(i % 2 == 0 ? 0.1 : 0.0, 0.0), 50.0, tolerance, i + 1));
     blocks.push_back(line_to(xyz(0.0, 0.1), 50.0, tolerance, 41));
     return blocks;
-}
-
-// A random machine of firtp_cliffs: four axes' {velocity, acceleration, jerk}.
-PlannerParameters four_axes(double period, double max_rate, const std::array<AxisLimits, 4>& axes) {
-    PlannerParameters p;
-    p.period = period;
-    p.max_rate = max_rate;
-    p.limits.axes = 4;
-    for (int a = 0; a < 4; ++a) p.limits.axis[a] = axes[static_cast<std::size_t>(a)];
-    return p;
 }
 
 }  // namespace
@@ -78,8 +67,8 @@ TEST(AloneBlocks, ALooserToleranceNeverSlowsShortBlocksBetweenReversals) {
 // quarter larger, and the block crawled at 0.48 mm/s behind the tolerance-free regime's stop:
 // 0.072 -> 0.250 s (+245 %). Now both tolerances plan sparse, the larger no slower.
 TEST(AloneBlocks, AShortG61BlockAfterACornerIsNotSlowedByALooserTolerance) {
-    const PlannerParameters p = four_axes(0.00025, 2.0, {{{259.631, 1108.84, 11861.9}, {72.2245, 23590.3, 674296.0},
-                                                          {64.9455, 19552.2, 3.94466e6}, {278.827, 18140.9, 5.19179e6}}});
+    const PlannerParameters p = test::drawn_machine(0.00025, 2.0, {{259.631, 1108.84, 11861.9}, {72.2245, 23590.3, 674296.0},
+                                                          {64.9455, 19552.2, 3.94466e6}, {278.827, 18140.9, 5.19179e6}});
     const double to[2][4] = {{-0.0052722174838535562, -0.037159791094068972, 0.016300260478382792, 0.0051131271461714936},
                              {-0.011525929669896394, 0.0096713199542215397, 0.02894524857732406, 0.0069531847579393435}};
     double cycle[2] = {0.0, 0.0};
@@ -110,8 +99,8 @@ TEST(AloneBlocks, AShortG61BlockAfterACornerIsNotSlowedByALooserTolerance) {
 // in its tolerance's regime instead, crawling at 1.9 mm/s, and slower with a looser tolerance
 // (0.083 -> 0.088 s). Sized to itself it takes 0.021 s under both.
 TEST(AloneBlocks, ALoneBlockIsSizedToItselfWhereAnAxisHasNoJerkLimit) {
-    const PlannerParameters p = four_axes(0.001, 1.0, {{{199.352, 1835.1, 8.82336e6}, {253.383, 488.504, 0.0},
-                                                        {386.087, 1116.48, 1.30247e6}, {399.185, 4758.72, 55695.0}}});
+    const PlannerParameters p = test::drawn_machine(0.001, 1.0, {{199.352, 1835.1, 8.82336e6}, {253.383, 488.504, 0.0},
+                                                        {386.087, 1116.48, 1.30247e6}, {399.185, 4758.72, 55695.0}});
     double cycle[2] = {0.0, 0.0};
     for (const int looser : {0, 1}) {
         Block b;
@@ -138,8 +127,8 @@ TEST(AloneBlocks, ALoneBlockIsSizedToItselfWhereAnAxisHasNoJerkLimit) {
 // stage: 0.611 -> 0.949 s for the program (+55 %), 0.282 -> 0.625 s for these chords. Now the G61
 // block keeps its entry corner's: 0.2525 and 0.251 s.
 TEST(AloneBlocks, AG61ChordAfterARunKeepsItsEntryCornersTolerance) {
-    const PlannerParameters p = four_axes(0.0005, 1.2, {{{564.239, 5587.24, 1.7964e6}, {109.425, 29876.9, 129498.0},
-                                                         {321.025, 5145.75, 0.0}, {487.715, 27064.6, 24528.4}}});
+    const PlannerParameters p = test::drawn_machine(0.0005, 1.2, {{564.239, 5587.24, 1.7964e6}, {109.425, 29876.9, 129498.0},
+                                                         {321.025, 5145.75, 0.0}, {487.715, 27064.6, 24528.4}});
     const double xy[12][2] = {{-9.442641192420588, -3.1792853548985489},  {-10.017547199555226, -3.4552932132201368},
                               {-10.523224230632893, -3.8438649506576921}, {-10.93795888958452, -4.3283155854586397},
                               {-11.243942778243012, -4.8878431672418721}, {-11.428037175731456, -5.4984219972942503},

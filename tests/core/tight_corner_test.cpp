@@ -147,16 +147,6 @@ TEST(TightCorner, TheRegimeIsChosenForTheRateTheProgramRunsAt) {
 
 namespace {
 
-// A random machine of firtp_cliffs: each axis' {velocity, acceleration, jerk}.
-PlannerParameters random_machine(double period, double max_rate, const std::vector<AxisLimits>& axes) {
-    PlannerParameters p;
-    p.period = period;
-    p.max_rate = max_rate;
-    p.limits.axes = static_cast<int>(axes.size());
-    for (std::size_t a = 0; a < axes.size(); ++a) p.limits.axis[a] = axes[a];
-    return p;
-}
-
 std::vector<Block> random_blocks(const std::vector<std::vector<double>>& to, const std::vector<double>& feed,
                                  const std::vector<double>& tolerance) {
     std::vector<Block> blocks(to.size());
@@ -182,7 +172,7 @@ TEST(TightCorner, BesideAShortBlockAStopIsWeighedToo) {
                                                     {137.683, 99.7112, 137.683}, {0.00120197, 0.00564011, 0.00120197});
     double cycle[2] = {0.0, 0.0};
     for (const int raised : {0, 1}) {
-        PlannerParameters p = random_machine(0.001, 1.0, {{103.015, 6903.52, 110476.0}, {482.393, 1911.59, 2.46651e7},
+        PlannerParameters p = test::drawn_machine(0.001, 1.0, {{103.015, 6903.52, 110476.0}, {482.393, 1911.59, 2.46651e7},
                                                           {73.9659, 7774.58, 1.49195e7}});
         if (raised)
             for (int a = 0; a < 3; ++a) p.limits.axis[a].max_velocity *= 1.25;
@@ -202,7 +192,7 @@ TEST(TightCorner, BesideAShortBlockAStopIsWeighedToo) {
 // into a corner at a speed its dense estimate had not seen (firtp_cliffs seed 7 program 9: a
 // 4.8 mm block after a tight 82 degree corner crawled at 0.41 mm/s, 12.05 s instead of 0.63).
 TEST(TightCorner, ABlockBesideAStopThatPaysStaysSparse) {
-    const PlannerParameters p = random_machine(0.00025, 2.0, {{371.393, 15055.5, 9.26587e7}, {437.134, 18783.9, 0.0},
+    const PlannerParameters p = test::drawn_machine(0.00025, 2.0, {{371.393, 15055.5, 9.26587e7}, {437.134, 18783.9, 0.0},
                                                               {479.697, 4430.29, 4.45347e6}, {254.143, 9664.19, 21741.1},
                                                               {296.79, 9722.39, 46063.9}});
     const std::vector<Block> blocks = random_blocks(

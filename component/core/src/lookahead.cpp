@@ -425,15 +425,15 @@ void Lookahead::classify(std::size_t i) {
     // estimates, a 1.54 mm block after one of 0.02 mm ran at 6.4 mm/s where sparse it reached
     // 43: firtp_cliffs seed 31 program 61, +15 % with every tolerance a quarter larger. A tie
     // taken sparse slowed polygon360.ngc at jerk 5e6 from 0.564 to 0.909 s.) Next to a stop it is
-    // the run's end, and the estimates decide (taken as dense there, a block ending at a stop kept its entry corner's speed over its whole length:
-    // firtp_cliffs seed 3 program 24, +46 % with every tolerance a quarter larger; seed 5
-    // program 22 took 1.795 s, now 0.230 s).
+    // the run's end, and the estimates decide a tie too (taken as dense there, a block ending at
+    // a stop kept its entry corner's speed over its whole length: firtp_cliffs seed 3 program 24,
+    // +46 % with every tolerance a quarter larger; seed 5 program 22 took 1.795 s, now 0.230 s).
     const bool inside = !entry_is_stop(i) && !exit_is_stop(i);
     // A block beside a stop that pays (stop_pays) stays sparse: dense, that junction became a corner
     // again, at a speed its dense estimate had not seen (firtp_cliffs seed 7 program 9: 4.8 mm at
     // 0.41 mm/s, 12.05 s instead of 0.63).
-    const bool paid_stop = (i > 0 && seg(i - 1).kind == Kind::stop && stop_bound(seg(i - 1)) == CornerBound::stop_pays) ||
-                           (s.kind == Kind::stop && stop_bound(s) == CornerBound::stop_pays);
+    const auto pays = [this](const Segment& j) { return j.kind == Kind::stop && stop_bound(j) == CornerBound::stop_pays; };
+    const bool paid_stop = (i > 0 && pays(seg(i - 1))) || pays(s);
     s.dense = false;
     if (s.short_block && in_window && !s.sparse_only && !alone && !paid_stop) {
         const double dense_v = dense_estimate(i), sparse_v = sparse_estimate(i);

@@ -58,6 +58,16 @@ inline PlannerParameters random_machine(std::mt19937_64& rng) {
     return p;
 }
 
+// A machine as firtp_cliffs --dump prints it: each axis' {velocity, acceleration, jerk}.
+inline PlannerParameters drawn_machine(double period, double max_rate, const std::vector<AxisLimits>& axes) {
+    PlannerParameters p;
+    p.period = period;
+    p.max_rate = max_rate;
+    p.limits.axes = static_cast<int>(axes.size());
+    for (std::size_t a = 0; a < axes.size(); ++a) p.limits.axis[static_cast<int>(a)] = axes[a];
+    return p;
+}
+
 // Directions in the machine's axes (the first three mostly).
 inline AxisVector random_direction(std::mt19937_64& rng, int axes) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);

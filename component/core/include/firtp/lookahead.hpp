@@ -368,8 +368,8 @@ private:
     bool smooth(std::size_t i) const;       // junction i does not slow the blocks down
     bool slower_long(std::size_t k, std::size_t i) const;  // k is a long block slower than i
     double sparse_estimate(std::size_t i) const;  // short block i: speed planned sparse, estimated
-    bool run_ends_next(std::size_t i) const;
-    double dense_epsilon(std::size_t i) const;
+    bool run_ends_next(std::size_t i) const;     // a stop asked for ends the run a block beyond i
+    double dense_epsilon(std::size_t i) const;   // the tolerance i's dense regime keeps
     double dense_estimate(std::size_t i) const;   // ... and planned dense
     double room_cap(std::size_t i, double alpha) const;  // dense i: highest c with c alpha <= L/c
 
