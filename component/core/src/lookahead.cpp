@@ -455,15 +455,7 @@ void Lookahead::set_junction(std::size_t i) {
     Segment& s = seg(i);
     const Segment& n = seg(i + 1);
     s.out_ramp = seg(i + 1).in_ramp = Regime{-1.0};
-    const auto stop = [&s](CornerBound why) {  // the junction is a stop, for this reason
-        s.kind = Kind::stop;
-        s.overlap = 0.0;
-        s.corner_cap = 0.0;
-        s.cap_bound = why;
-        s.junction = s.regime;
-        s.turn_alpha = 0.0;
-    };
-    if (stops_whatever_follows(s)) return stop(CornerBound::stop);
+    if (stops_whatever_follows(s)) return set_stop(i, CornerBound::stop);
     s.kind = s.dense && n.dense ? Kind::dense : Kind::corner;
     s.junction = s.dense || n.dense ? junction_regime(s.dense, s.regime, n.dense, n.regime) : corner_regime(s, n);
     s.turn_alpha = box(s.turn.du, s.junction);
@@ -485,14 +477,17 @@ void Lookahead::set_junction(std::size_t i) {
                 s.junction = tight, s.turn_alpha = alpha, s.corner_cap = cap, tight_corner = true;
         }
     }
-    if (s.kind == Kind::corner && std::isfinite(s.corner_cap) && stop_pays(i, s.corner_cap)) return stop(CornerBound::stop_pays);
+    // Between sparse blocks a stop may be faster (lookahead_stop.cpp): by estimate here, planned
+    // once the blend is set.
+    const bool weigh = s.kind == Kind::corner && std::isfinite(s.corner_cap) && sized(i) && sized(i + 1) && !s.dense && !n.dense;
+    if (weigh && stop_pays(i, s.corner_cap)) return set_stop(i, CornerBound::stop_pays);
     if (s.kind == Kind::corner)  // a dense neighbour hosts half the corner's box in its one leg
         for (std::size_t k : {i, i + 1})
             if (seg(k).dense) {
                 const double room = room_cap(k, s.turn_alpha);
                 if (room < s.corner_cap) s.corner_cap = room, s.cap_bound = CornerBound::room;
             }
-    if (!(s.corner_cap > 0.0)) return stop(CornerBound::stop);  // no speed passes it (corner_cap is read of corners only)
+    if (!(s.corner_cap > 0.0)) return set_stop(i, CornerBound::stop);  // no speed passes it (corner_cap is read of corners only)
     // A corner in a dense run's regime: the ramps beside it on a sparse block share its jerk stage,
     // their boxes up to J T2 (a box alone at that height keeps the jerk at J; where an axis swings
     // the other way within T2 the exact check finds it, and they keep the run's caps: replan).
@@ -511,6 +506,7 @@ void Lookahead::set_junction(std::size_t i) {
         if (!n.dense && s.junction.t2 > n.regime.t2) seg(i + 1).in_ramp = stretched(n.regime, s.junction.t2);
     }
     set_overlap(i);
+    if (weigh) stop_if_faster(i);
 }
 
 // Overlap where it is safe at every speed the corner may take, up to V_max = the blocks' feeds at
@@ -578,68 +574,6 @@ Lookahead::Regime Lookahead::ramp_sharing(const Regime& corner) const {
     return ramp;
 }
 
-// A corner between sparse blocks takes its tolerance's regime (`tight`, its turn's box and cap
-// there; `machine` likewise in the machine's) where that loses no more time by estimate
-// (blend_loss; on a tie the faster corner, which a raised override may use). A faster corner
-// alone does not pay: on a 90 degree corner between 30 mm blocks at 200 mm/s (0.002 mm) the
-// tolerance's regime passed at 1.33 mm/s instead of 0.23 and took 0.652 s instead of 0.480, its
-// ramps at 780 mm/s^2.
-bool Lookahead::tight_pays(std::size_t i, const Regime& tight, double tight_alpha, double cap, const Regime& machine,
-                           double machine_alpha, double machine_cap) const {
-    return cap > machine_cap && blend_loss(i, tight, tight_alpha, cap) <= blend_loss(i, machine, machine_alpha, machine_cap);
-}
-
-// Passing corner i at v in `regime` (its turn's box turn_alpha), by estimate: the time lost against
-// the speeds f beside it (each block's feed at the rate it runs, target(), or the peak its length
-// allows; at the highest override's feeds a corner at 200 % was judged for speeds it never ran).
-// Each ramp between f and v loses its kernel's width times (f - v) / 2 f; the ramps' kernels stay
-// apart by the turn's reserves and jerk gaps (profile_legs), run at v. On the blocks' whole
-// lengths: the decision does not change while the first one runs. (Measured on a 90 degree corner
-// between 20 mm blocks at 100 mm/s, 0.05-0.5 mm: within 0.6 ms of the samples' cycle time.)
-double Lookahead::blend_loss(std::size_t i, const Regime& regime, double turn_alpha, double v) const {
-    const Segment& s = seg(i);
-    const Segment& n = seg(i + 1);
-    const double t2 = regime.t2, tb = v * turn_alpha, reserve = 0.5 * std::max(0.0, t2 - tb);
-    double loss = 0.0, slowest = infinity;
-    for (std::size_t k : {i, i + 1}) {
-        const Segment* b = &seg(k);
-        const double alpha = box(b->u, regime);
-        const double f = std::min(target(k), std::sqrt(v * v + b->length / alpha));
-        slowest = std::min(slowest, f);
-        if (v < f) loss += ((f - v) * alpha + t2) * (f - v) / (2.0 * f);
-    }
-    const double before = rules_.needs_gap(-s.u, s.turn.direction) ? t2 : reserve;
-    const double after = rules_.needs_gap(s.turn.direction, n.u) ? t2 : reserve;
-    if (v < slowest) loss += (tb + before + after - t2) * (1.0 - v / slowest);
-    return loss;
-}
-
-// Stopping at corner i instead, by the same estimate: the sized ramps beside it (sized_kernel)
-// lose half their widths, and up to a period goes to the tick grid.
-double Lookahead::stop_loss(std::size_t i) const {
-    double loss = parameters_.period;
-    for (std::size_t k : {i, i + 1}) {
-        const Segment& b = seg(k);
-        const double f = std::min(target(k), std::sqrt(b.length / b.alpha));
-        loss += 0.5 * sized_kernel(f, b.alpha, b.u_jerk).width();
-    }
-    return loss;
-}
-
-// A corner between sparse blocks stops where passing it at v would lose more (a 30 degree
-// turn at 0.6 mm/s between 30 mm blocks at 200 mm/s keeps T2 / 2 more between its ramps than a
-// stop and took 0.499 s against 0.474), or no less than a period less: the estimates are good to
-// about a period, and a tie goes to the stop (TightCorner.*: a 135 degree turn at 0.02 mm blended
-// in 0.285 s against the stop's 0.283). Short blocks too: held to a blend, a corner beside a
-// 7.4 mm block passed at 0.2 mm/s where a stop took 40 ms less (firtp_cliffs seed 3 program
-// 192, +16 % with the velocity limits a quarter higher: the block became short).
-bool Lookahead::stop_pays(std::size_t i, double v) const {
-    const Segment& s = seg(i);
-    const Segment& n = seg(i + 1);
-    if (!sized(i) || !sized(i + 1) || s.dense || n.dense) return false;
-    return stop_loss(i) < blend_loss(i, s.junction, s.turn_alpha, v) + parameters_.period;
-}
-
 Lookahead::Regime Lookahead::ramp_on_block(std::size_t i, const Regime& ramp) const {
     const Segment& s = seg(i);
     if (!shares(s.in_ramp) || !shares(s.out_ramp)) return ramp;
@@ -684,8 +618,10 @@ void Lookahead::link(std::size_t i) {
     // junctions next to them are decided again.
     classify(i);
     classify(i + 1);
-    if (i > 0) junction_caps(i - 1);
+    // The newest junction first: the one before weighs its stop with the plan of the block after
+    // it, whose exit is this junction (lookahead_stop.cpp).
     junction_caps(i);
+    if (i > 0) junction_caps(i - 1);
 }
 
 // ---- The profile of one segment ----------------------------------------------------------------

@@ -331,9 +331,24 @@ private:
     Regime ramp_sharing(const Regime& corner) const;  // a ramp sharing the corner's jerk stage: boxes up to J T2 (set_junction)
     bool tight_pays(std::size_t i, const Regime& tight, double tight_alpha, double cap, const Regime& machine, double machine_alpha,
                     double machine_cap) const;
+    double peak_estimate(std::size_t k, double v, double alpha) const;
     double blend_loss(std::size_t i, const Regime& regime, double turn_alpha, double v) const;  // corner i at v: time lost, s
     double stop_loss(std::size_t i) const;                                                       // a stop there: time lost, s
-    bool stop_pays(std::size_t i, double v) const;  // sparse corner i passed at v loses more than a stop there
+    bool stop_pays(std::size_t i, double v) const;  // sparse corner i passed at v loses more than a stop there, by estimate
+    // Whether corner i stops: both planned (lookahead_stop.cpp).
+    struct Blend {  // what set_stop() changes of a junction set as a blend
+        Kind kind;
+        double overlap, overlap_tk, corner_cap;
+        CornerBound cap_bound;
+        Regime junction;
+        double turn_alpha;
+        Regime out_ramp, in_ramp;
+    };
+    void set_stop(std::size_t i, CornerBound why);
+    void stop_if_faster(std::size_t i);
+    double pair_time(std::size_t i) const;
+    class Fitting;
+    double block_time(Fitting& f, std::size_t k, double a, double exit, double& entered, double& left) const;
     CornerBound stop_bound(const Segment& s) const {  // what the report says of a stop
         return s.cap_bound == CornerBound::stop_pays && !stops_whatever_follows(s) ? CornerBound::stop_pays : CornerBound::stop;
     }
