@@ -347,8 +347,6 @@ private:
     void set_stop(std::size_t i, CornerBound why);
     void stop_if_faster(std::size_t i);
     double pair_time(std::size_t i) const;
-    class Fitting;
-    double block_time(Fitting& f, std::size_t k, double a, double exit, double& entered, double& left) const;
     CornerBound stop_bound(const Segment& s) const {  // what the report says of a stop
         return s.cap_bound == CornerBound::stop_pays && !stops_whatever_follows(s) ? CornerBound::stop_pays : CornerBound::stop;
     }
@@ -472,6 +470,8 @@ private:
         bool corner_in_ = false, corner_out_ = false;
         GapMemo gaps_;  // the directions stay the same unless the entry is a dense junction
     };
+    // Block k planned from entry a (< 0: from rest) to at most `exit` (pair_time, lookahead_stop.cpp).
+    double block_time(Fitting& f, std::size_t k, double a, double exit, double& entered, double& left) const;
 
     // sampled_corner_speed() (jerk_norm_, the period) by its other arguments: link() and classify()
     // ask again about junctions that have not changed. Direct-mapped on the arguments' bits.
