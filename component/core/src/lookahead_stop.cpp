@@ -32,29 +32,10 @@
 
 namespace firtp {
 
+using search::about_highest;
+
 namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-// The highest x in [lo, hi] that passes, to 0.05 % of hi: hi where it passes, else halving down
-// to a speed that does and narrowing on the margins (search::narrow). Where none passes within
-// 12 halvings, search::highest (lo where nothing passes).
-template <class F>
-double about_highest(F&& test, double lo, double hi) {
-    const search::Probe top = test(hi);
-    if (top.ok) return hi;
-    double x_bad = hi, m_bad = top.margin;
-    for (int k = 0; k < 12; ++k) {  // halving down from hi to a speed that passes
-        const double x = lo + 0.5 * (x_bad - lo);
-        const search::Probe p = test(x);
-        if (p.ok) {
-            double x_ok = x;
-            search::narrow(test, x_ok, p.margin, x_bad, m_bad, 5e-4 * hi);
-            return x_ok;
-        }
-        x_bad = x, m_bad = p.margin;
-    }
-    return search::highest(test, lo, x_bad);
-}
 }  // namespace
 
 // A corner between sparse blocks takes its tolerance's regime (`tight`, its turn's box and cap
@@ -103,7 +84,7 @@ double Lookahead::stop_loss(std::size_t i) const {
     double loss = parameters_.period;
     for (std::size_t k : {i, i + 1}) {
         const Segment& b = seg(k);
-        const double f = std::min(target(k), std::sqrt(b.length / b.alpha));
+        const double f = std::min(target(k), peak_estimate(k, 0.0, b.alpha));
         loss += 0.5 * sized_kernel(f, b.alpha, b.u_jerk).width();
     }
     return loss;
@@ -116,10 +97,9 @@ double Lookahead::stop_loss(std::size_t i) const {
 // 0.02 mm blended in 0.285 s against the stop's 0.283). Short blocks too: held to a blend, a
 // corner beside a 7.4 mm block passed at 0.2 mm/s where a stop took 40 ms less (firtp_cliffs
 // seed 3 program 192, +16 % with the velocity limits a quarter higher: the block became short).
+// Asked only between sparse blocks with sized stops (set_junction's `weigh`).
 bool Lookahead::stop_pays(std::size_t i, double v) const {
     const Segment& s = seg(i);
-    const Segment& n = seg(i + 1);
-    if (!sized(i) || !sized(i + 1) || s.dense || n.dense) return false;
     return stop_loss(i) < blend_loss(i, s.junction, s.turn_alpha, v) + parameters_.period;
 }
 

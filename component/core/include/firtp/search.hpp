@@ -244,6 +244,27 @@ double highest_near(F&& test, double lo, double hi, double x) {
     return detail::highest_within(test, lo, hi, above, over.margin, hi, top.margin, flip_eps(above, hi));
 }
 
+// The highest x in [lo, hi] that passes, to 0.05 % of hi: hi where it passes, else halving down
+// to a speed that does and narrowing on the margins (narrow). Where none passes within
+// 12 halvings, highest (lo where nothing passes).
+template <class F>
+double about_highest(F&& test, double lo, double hi) {
+    const Probe top = test(hi);
+    if (top.ok) return hi;
+    double x_bad = hi, m_bad = top.margin;
+    for (int k = 0; k < 12; ++k) {  // halving down from hi to a speed that passes
+        const double x = lo + 0.5 * (x_bad - lo);
+        const Probe p = test(x);
+        if (p.ok) {
+            double x_ok = x;
+            narrow(test, x_ok, p.margin, x_bad, m_bad, 5e-4 * hi);
+            return x_ok;
+        }
+        x_bad = x, m_bad = p.margin;
+    }
+    return highest(test, lo, x_bad);
+}
+
 // Smallest x in [lo, hi] with ok(x), for ok false up to some point and true beyond; hi if none.
 template <class F>
 double lowest(F&& test, double lo, double hi) {
