@@ -145,28 +145,12 @@ TEST(TightCorner, TheRegimeIsChosenForTheRateTheProgramRunsAt) {
 
 }  // namespace
 
-namespace {
-
-std::vector<Block> random_blocks(const std::vector<std::vector<double>>& to, const std::vector<double>& feed,
-                                 const std::vector<double>& tolerance) {
-    std::vector<Block> blocks(to.size());
-    for (std::size_t k = 0; k < to.size(); ++k) {
-        for (std::size_t a = 0; a < to[k].size(); ++a) blocks[k].target[static_cast<int>(a)] = to[k][a];
-        blocks[k].feed = feed[k];
-        blocks[k].tolerance = tolerance[k];
-        blocks[k].line = static_cast<int>(k) + 1;
-    }
-    return blocks;
-}
-
-}  // namespace
-
 // An 88 degree corner after a 7.4 mm block at 0.0012 mm (firtp_cliffs seed 3
 // program 192). With the velocity limits a quarter higher the block became short (too short to
 // reach its feed and come back), and a corner beside a short block was never stopped at: it blended
 // at 0.2 mm/s, 0.253 -> 0.293 s (+16 %). Now a stop is weighed there too.
 TEST(TightCorner, BesideAShortBlockAStopIsWeighedToo) {
-    const std::vector<Block> blocks = random_blocks({{-3.6804548498153991, 3.9723898515072347, 5.0278818346029768},
+    const std::vector<Block> blocks = test::drawn_blocks({{-3.6804548498153991, 3.9723898515072347, 5.0278818346029768},
                                                      {-3.7495215811752836, 10.657288442690197, 0.19524312854482684},
                                                      {-3.7403081142018761, 10.667127556277817, 0.19116756500376553}},
                                                     {137.683, 99.7112, 137.683}, {0.00120197, 0.00564011, 0.00120197});
@@ -195,7 +179,7 @@ TEST(TightCorner, ABlockBesideAStopThatPaysStaysSparse) {
     const PlannerParameters p = test::drawn_machine(0.00025, 2.0, {{371.393, 15055.5, 9.26587e7}, {437.134, 18783.9, 0.0},
                                                               {479.697, 4430.29, 4.45347e6}, {254.143, 9664.19, 21741.1},
                                                               {296.79, 9722.39, 46063.9}});
-    const std::vector<Block> blocks = random_blocks(
+    const std::vector<Block> blocks = test::drawn_blocks(
         {{3.1582240130655213, 3.69570463091658, 3.477644879384421, -2.5867477252725002, -1.3028276242657653},
          {6.3776816519421118, -0.32338753697411038, 3.5957906452353727, -0.88576672601767581, -0.088575790731080462},
          {7.2392393349002759, -1.3989350745312403, 3.6274075831471206, -0.43056792769299157, 0.23636962355083951},
@@ -214,7 +198,7 @@ TEST(TightCorner, ABlockBesideAStopThatPaysStaysSparse) {
 // both ways (lookahead_stop.cpp). firtp_cliffs seed 31 program 83: 0.13 and 0.34 mm, 62 degrees;
 // it stopped as drawn and blended with the tolerance a quarter looser, 0.0868 -> 0.0958 s.
 TEST(TightCorner, AShortBlockIsWeighedByItsPlan) {
-    const std::vector<Block> blocks = random_blocks({{0.022080816992794829, -0.11762158916191666, -0.04263723579059428},
+    const std::vector<Block> blocks = test::drawn_blocks({{0.022080816992794829, -0.11762158916191666, -0.04263723579059428},
                                                      {0.20998050453301953, -0.32742230991343874, 0.15316740797464606}},
                                                     {20.6132, 46.1469}, {0.00133642, 0.00714022});
     const PlannerParameters p = test::drawn_machine(0.00025, 1.2, {{121.422, 845.267, 54628.3}, {208.707, 773.332, 0.0},

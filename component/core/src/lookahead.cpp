@@ -441,6 +441,43 @@ void Lookahead::classify(std::size_t i) {
     }
     s.regime = s.dense ? dense : s.own;
     s.alpha = box(s.u, s.regime);
+    s.narrowed = false;
+    if (s.dense) smooth_dense(i);
+}
+
+// The tolerance a dense block's regime keeps (classify decides its class at dense_epsilon's):
+// where the run of dense blocks it lies in starts from rest or ends in a stop, no more than that
+// run is long. Next to a stop so short a run is slow, bound by its room or the stop, and a regime
+// sized by a tolerance it cannot use only lengthens its start or stop and the ramps beside it,
+// which share its stage T2_d = 2 cbrt(3 eps / J): firtp_cliffs seed 99 program 263, a 0.05 mm
+// dense block from rest at 0.95 mm, took 0.0945 -> 0.1005 s with every tolerance a quarter larger
+// (T2_d 75 -> 81 ms), now 0.064 s both. Between smooth corners the run keeps the whole: there the
+// tolerance bounds the corner it makes (a 0.0001 mm arc between two 1 mm lines of
+// ugs__Gates_combined_R12.nc, its line 1332, slowed the line before it 45 % at its length). So
+// does a run that may go on beyond the newest block, or one of more than run_walk blocks.
+double Lookahead::run_epsilon(std::size_t i) const {
+    const double epsilon = dense_epsilon(i);
+    double length = seg(i).length;
+    std::size_t first = i, last = i, walked = 0;
+    while (length < epsilon && !entry_is_stop(first) && seg(first - 1).dense) {
+        if (++walked > run_walk) return epsilon;
+        length += seg(--first).length;
+    }
+    while (length < epsilon) {
+        if (last + 1 == count_) return epsilon;
+        if (exit_is_stop(last) || !seg(last + 1).dense) break;
+        if (++walked > run_walk) return epsilon;
+        length += seg(++last).length;
+    }
+    return entry_is_stop(first) || exit_is_stop(last) ? std::min(epsilon, length) : epsilon;
+}
+
+void Lookahead::smooth_dense(std::size_t i) {
+    Segment& s = seg(i);
+    const double epsilon = run_epsilon(i);
+    s.narrowed = epsilon < dense_epsilon(i);
+    s.regime = dense_regime(epsilon, s.u);
+    s.alpha = box(s.u, s.regime);
 }
 
 void Lookahead::junction_caps(std::size_t i) {
@@ -495,8 +532,12 @@ void Lookahead::set_junction(std::size_t i) {
         // (A tight corner's ramps keep its own caps: at J T2 they swung past the jerk limit and the
         // checks lowered the corners, firtp_bench's random corners 19 % slower.)
         const Regime ramp = s.ramps_capped && !tight_corner ? ramp_sharing(s.junction) : s.junction;
-        if (!s.dense) s.out_ramp = ramp;
-        if (!n.dense) seg(i + 1).in_ramp = ramp;
+        // (Beside a run narrowed at a stop, run_epsilon, a ramp whose own stage is longer keeps its
+        // own: shared, its box of at most J T2 slowed a 50.9 mm block after a 0.018 mm one from
+        // rest, firtp_cliffs seed 2 program 82, 0.617 -> 0.687 s; now 0.592 s.)
+        const bool narrowed = s.dense ? s.narrowed : n.narrowed;
+        if (!s.dense && !(narrowed && ramp.t2 < s.regime.t2)) s.out_ramp = ramp;
+        if (!n.dense && !(narrowed && ramp.t2 < n.regime.t2)) seg(i + 1).in_ramp = ramp;
     }
     // A sparse corner's stage longer than a block's own (own_regime): the ramp beside it on
     // that block takes it with its own boxes (their jerk only falls), so the two share a moving
@@ -618,6 +659,8 @@ void Lookahead::link(std::size_t i) {
     // junctions next to them are decided again.
     classify(i);
     classify(i + 1);
+    // (Block i's run ends where block i + 1 is not dense: known only now.)
+    if (seg(i).dense && !(i == 0 && frozen_.moving)) smooth_dense(i);
     // The newest junction first: the one before weighs its stop with the plan of the block after
     // it, whose exit is this junction (lookahead_stop.cpp).
     junction_caps(i);

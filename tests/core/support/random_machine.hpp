@@ -68,6 +68,19 @@ inline PlannerParameters drawn_machine(double period, double max_rate, const std
     return p;
 }
 
+// Blocks as firtp_cliffs --dump prints them: each one's end point, feed and tolerance.
+inline std::vector<Block> drawn_blocks(const std::vector<std::vector<double>>& to, const std::vector<double>& feed,
+                                       const std::vector<double>& tolerance) {
+    std::vector<Block> blocks(to.size());
+    for (std::size_t k = 0; k < to.size(); ++k) {
+        for (std::size_t a = 0; a < to[k].size(); ++a) blocks[k].target[static_cast<int>(a)] = to[k][a];
+        blocks[k].feed = feed[k];
+        blocks[k].tolerance = tolerance[k];
+        blocks[k].line = static_cast<int>(k) + 1;
+    }
+    return blocks;
+}
+
 // Directions in the machine's axes (the first three mostly).
 inline AxisVector random_direction(std::mt19937_64& rng, int axes) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -98,6 +98,8 @@ private:
     // inside that by enough that the check's bound on the chords (closest_approach: the path's
     // error plus the sag its acceleration allows) passes them without measuring every chord.
     static constexpr double check_margin = 1e-6, plan_margin = 2e-6;
+    // run_epsilon: a dense run longer than this many blocks keeps the whole tolerance.
+    static constexpr std::size_t run_walk = 8;
     enum class Kind : std::uint8_t { stop, corner, dense };
 
     // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
@@ -107,13 +109,14 @@ private:
     // a stage than their acceleration along it needs, and no stage longer than its feed's (every
     // box within J T2: own_regime, corner_regime, feed_stage). The ramps beside a sparse corner
     // take the corner's stage where it is longer (sparse_ramps), so they share its moving
-    // average. A dense run (dense.hpp) uses T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)), the
-    // largest over the axes moving in it (the others' boxes held to J T2_d / 2): the run's
-    // accelerations may then swing from -h to +h within T2_d, and smoothing a curve at
-    // acceleration h by T2_d moves it by h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next
-    // to a corner in a run's regime share it (Segment::in_ramp), and so do a corner's between
-    // sparse blocks where it takes its tolerance's regime (tight_pays); a sparse block's start and
-    // stop are sized to themselves (sized()).
+    // average. A dense run (dense.hpp) uses T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)) (eps:
+    // run_epsilon's: no more than a short run next to a stop is long), the largest over the axes
+    // moving in it (the others' boxes held to J T2_d / 2): the run's accelerations may then swing
+    // from -h to +h within T2_d, and smoothing a curve at acceleration h by T2_d moves it by
+    // h T2_d^2 / 24 <= eps / 2. A sparse block's ramps next to a corner in a run's regime share it
+    // (Segment::in_ramp; not a narrowed run's shorter one), and so do a corner's between sparse
+    // blocks where it takes its tolerance's regime (tight_pays); a sparse block's start and stop
+    // are sized to themselves (sized()).
     struct Regime {
         double t2 = 0.0;
         AxisVector cap = AxisVector::Zero();
@@ -132,6 +135,7 @@ private:
         double u_jerk = 0.0;     // max_a |u_a| / J_a: a sized step's T1 T2 per unit of speed (sized_kernel)
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
+        bool narrowed = false;   // dense, its regime below dense_epsilon's (run_epsilon)
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
         bool ramped_on = false;    // planned from its start (from rest or just started) to a plateau above it
         bool one_speed_start = false;  // that ramp on failed the check at its exit: it keeps its start's speed
@@ -375,6 +379,8 @@ private:
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
     void set_turn(Segment& s, const AxisVector& next_u) const;  // s.turn towards next_u, and its turn_box
     void classify(std::size_t i);           // dense or not, from its length and its junctions
+    void smooth_dense(std::size_t i);       // dense i: its regime, at run_epsilon
+    double run_epsilon(std::size_t i) const;  // ... the tolerance that keeps
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i (and ramp_change_)
     void set_junction(std::size_t i);       // ... those themselves
     void set_overlap(std::size_t i);        // ... and its overlap (Segment::overlap)

@@ -1,0 +1,114 @@
+// A short run of dense blocks next to a stop (from rest, or into a stop) smooths in the regime of
+// no more tolerance than the run is long (lookahead.cpp, run_epsilon): the tolerance's own regime
+// only lengthened its start or stop and the ramps beside it, so a looser tolerance made such
+// programs slower (issue 13's cliffs). A ramp beside such a run keeps its own stage where that is
+// longer (set_junction). Between smooth corners a run keeps the whole tolerance. Measured on the
+// samples: cycle time, limits (also as 1 ms differences), corner errors and the end point
+// (case_ratios).
+#include "support/case_ratios.hpp"
+#include "support/limits.hpp"
+#include "support/random_machine.hpp"
+#include "support/reference.hpp"
+
+#include <firtp/trajectory.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+using namespace firtp;
+using firtp::test::line_to;
+using firtp::test::xyz;
+
+namespace {
+
+// The path planned as drawn and with every tolerance a quarter looser, each within its limits and
+// tolerances on the samples: the two cycle times.
+std::array<double, 2> as_drawn_and_looser(const PlannerParameters& p, const std::vector<Block>& blocks) {
+    std::array<double, 2> cycle{};
+    for (const int looser : {0, 1}) {
+        std::vector<Block> path = blocks;
+        if (looser)
+            for (Block& b : path) b.tolerance *= 1.25;
+        SCOPED_TRACE(looser ? "tolerances a quarter looser" : "tolerances as drawn");
+        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), path);
+        const test::CaseRatios r = test::case_ratios(p, path, t);
+        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+        cycle[static_cast<std::size_t>(looser)] = t.cycle_time;
+        std::printf("%s: cycle %.5f s\n", looser ? "looser" : "as drawn", t.cycle_time);
+    }
+    return cycle;
+}
+
+// The time a path of lines through `points` (from the origin) takes on the built-in machine.
+double cycle_through(const std::vector<AxisVector>& points, double feed, double tolerance) {
+    std::vector<Block> blocks;
+    for (const AxisVector& at : points) blocks.push_back(line_to(at, feed, tolerance, static_cast<std::int64_t>(blocks.size()) + 1));
+    const PlannerParameters p = test::builtin_machine();
+    const Trajectory t = plan_trajectory(p, AxisVector::Zero(), blocks);
+    const test::CaseRatios r = test::case_ratios(p, blocks, t);
+    EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
+    return t.cycle_time;
+}
+
+}  // namespace
+
+// firtp_cliffs seed 99 program 263: a 0.05 mm block from rest, dense at 0.95 mm, then 0.24 mm to
+// the end. In the tolerance's regime (T2_d 75 ms, 81 ms a quarter looser) it took 0.0945 and
+// 0.1005 s; in its length's, 0.064 s both.
+TEST(DenseRun, NextToAStopAShortRunKeepsNoMoreToleranceThanItIsLong) {
+    const std::vector<Block> blocks = test::drawn_blocks({{0.011046668342982796, 0.048760182321739801}, {-0.22405139187599557, 0.082279026340710618}},
+                                                         {557.235, 294.691}, {0.952974, 0.213314});
+    const PlannerParameters p = test::drawn_machine(0.00025, 1.2, {{329.737, 5421.79, 1.49267e+06}, {294.885, 8413.43, 53515.7}});
+    const std::array<double, 2> cycle = as_drawn_and_looser(p, blocks);
+    EXPECT_LE(cycle[1], cycle[0] + p.period);
+    EXPECT_LT(cycle[0], 0.07);
+}
+
+// firtp_cliffs seed 2 program 82: 0.018 mm from rest, narrowed, then 50.9 mm. In the tolerance's
+// regime it took 0.617 s, and 0.629 s a quarter looser. Narrowed, with the long block's ramp
+// sharing the run's shorter stage (a box of at most J T2), 0.687 s; with its own, 0.592 s, and
+// 0.599 s a quarter looser (a cliff of 1.2 % remains).
+TEST(DenseRun, ARampBesideANarrowedRunKeepsItsOwnStage) {
+    const std::vector<Block> blocks = test::drawn_blocks(
+        {{-0.005029405190564871, -0.013152897030505267, 0.0011244433890198709, 0.010287955556239285, -0.0047938600958173762},
+         {-27.058249010562456, -38.741999351464102, 15.182772274093519, 7.0494023263622587, -8.7912218192848766},
+         {-27.160250307432328, -38.825389000426206, 15.099843369620638, 7.0325270559345867, -8.7584013514767811}},
+        {289.774, 323.425, 394.573}, {0.318625, 0.318625, 0.318625});
+    const PlannerParameters p = test::drawn_machine(0.001, 1.0, {{141.451, 1023.74, 16757.2}, {487.577, 783.013, 2.2607e+07},
+                                                               {182.587, 344.585, 0.0}, {75.1203, 1586.42, 8.20247e+07},
+                                                               {72.1477, 13163.7, 660529.0}});
+    const std::array<double, 2> cycle = as_drawn_and_looser(p, blocks);
+    EXPECT_LT(cycle[0], 0.6);
+    EXPECT_LT(cycle[1], 0.61);
+}
+
+// A 0.0001 mm block between two 1 mm lines at 80 degrees (ugs__Gates_combined_R12.nc, its line
+// 1332, an arc that short): between smooth corners the tolerance bounds the corner the two make,
+// and the run keeps it whole. At its length the corner's box grew eightfold: that line took 41 ms
+// more in that program. As fast as the corner without the short block, within 5 %.
+TEST(DenseRun, BetweenSmoothCornersARunKeepsTheWholeTolerance) {
+    const double beta = 80.0 * std::numbers::pi / 180.0;
+    const AxisVector corner = xyz(1.0, 0.0), turn = xyz(std::cos(beta), std::sin(beta));
+    const double without = cycle_through({corner, corner + turn}, 50.0, 0.05);
+    const double with = cycle_through({corner, corner + 1e-4 * xyz(std::cos(0.5 * beta), std::sin(0.5 * beta)), corner + turn}, 50.0, 0.05);
+    std::printf("without %.4f s, with the 0.0001 mm block %.4f s\n", without, with);
+    EXPECT_LT(with, 1.05 * without);
+}
+
+// The same short block as a spur before a reversal (that program's line 6182): the run ends in a
+// stop and is narrowed to its length, and the ramp into its corner keeps its own stage. 0.150 s;
+// in the tolerance's regime 0.164 s, narrowed with the ramp sharing its stage 0.206 s; reversing
+// at the corner itself takes 0.138 s.
+TEST(DenseRun, ASpurBeforeAReversalIsNarrowedAndTheRampBeforeItKeepsItsStage) {
+    const double beta = 80.0 * std::numbers::pi / 180.0;
+    const AxisVector corner = xyz(1.0, 0.0), spur = corner + 1e-4 * xyz(std::cos(beta), std::sin(beta));
+    const double stopped = cycle_through({corner, xyz(0.0, 0.0)}, 50.0, 0.05);
+    const double with = cycle_through({corner, spur, corner, xyz(0.0, 0.0)}, 50.0, 0.05);
+    std::printf("reversed at the corner %.4f s, after the 0.0001 mm spur %.4f s\n", stopped, with);
+    EXPECT_LT(with, 0.16);
+}
