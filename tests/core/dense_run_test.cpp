@@ -7,6 +7,7 @@
 // (case_ratios).
 #include "support/case_ratios.hpp"
 #include "support/limits.hpp"
+#include "support/looser.hpp"
 #include "support/random_machine.hpp"
 #include "support/reference.hpp"
 
@@ -25,24 +26,6 @@ using firtp::test::line_to;
 using firtp::test::xyz;
 
 namespace {
-
-// The path planned as drawn and with every tolerance a quarter looser, each within its limits and
-// tolerances on the samples: the two cycle times.
-std::array<double, 2> as_drawn_and_looser(const PlannerParameters& p, const std::vector<Block>& blocks) {
-    std::array<double, 2> cycle{};
-    for (const int looser : {0, 1}) {
-        std::vector<Block> path = blocks;
-        if (looser)
-            for (Block& b : path) b.tolerance *= 1.25;
-        SCOPED_TRACE(looser ? "tolerances a quarter looser" : "tolerances as drawn");
-        const Trajectory t = plan_trajectory(p, AxisVector::Zero(), path);
-        const test::CaseRatios r = test::case_ratios(p, path, t);
-        EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
-        cycle[static_cast<std::size_t>(looser)] = t.cycle_time;
-        std::printf("%s: cycle %.5f s\n", looser ? "looser" : "as drawn", t.cycle_time);
-    }
-    return cycle;
-}
 
 // The time a path of lines through `points` (from the origin) takes on the built-in machine.
 double cycle_through(const std::vector<AxisVector>& points, double feed, double tolerance) {
@@ -64,9 +47,9 @@ TEST(DenseRun, NextToAStopAShortRunKeepsNoMoreToleranceThanItIsLong) {
     const std::vector<Block> blocks = test::drawn_blocks({{0.011046668342982796, 0.048760182321739801}, {-0.22405139187599557, 0.082279026340710618}},
                                                          {557.235, 294.691}, {0.952974, 0.213314});
     const PlannerParameters p = test::drawn_machine(0.00025, 1.2, {{329.737, 5421.79, 1.49267e+06}, {294.885, 8413.43, 53515.7}});
-    const std::array<double, 2> cycle = as_drawn_and_looser(p, blocks);
-    EXPECT_LE(cycle[1], cycle[0] + p.period);
-    EXPECT_LT(cycle[0], 0.07);
+    const std::array<Trajectory, 2> t = test::as_drawn_and_looser(p, blocks);
+    EXPECT_LE(t[1].cycle_time, t[0].cycle_time + p.period);
+    EXPECT_LT(t[0].cycle_time, 0.07);
 }
 
 // firtp_cliffs seed 2 program 82: 0.018 mm from rest, narrowed, then 50.9 mm. In the tolerance's
@@ -82,9 +65,9 @@ TEST(DenseRun, ARampBesideANarrowedRunKeepsItsOwnStage) {
     const PlannerParameters p = test::drawn_machine(0.001, 1.0, {{141.451, 1023.74, 16757.2}, {487.577, 783.013, 2.2607e+07},
                                                                {182.587, 344.585, 0.0}, {75.1203, 1586.42, 8.20247e+07},
                                                                {72.1477, 13163.7, 660529.0}});
-    const std::array<double, 2> cycle = as_drawn_and_looser(p, blocks);
-    EXPECT_LT(cycle[0], 0.6);
-    EXPECT_LT(cycle[1], 0.61);
+    const std::array<Trajectory, 2> t = test::as_drawn_and_looser(p, blocks);
+    EXPECT_LT(t[0].cycle_time, 0.6);
+    EXPECT_LT(t[1].cycle_time, 0.61);
 }
 
 // A 0.0001 mm block between two 1 mm lines at 80 degrees (ugs__Gates_combined_R12.nc, its line
