@@ -5,7 +5,7 @@
 // Measured on the samples, within the tolerance and the limits, never slower than a stop.
 #include "support/case_ratios.hpp"
 #include "support/limits.hpp"
-#include "support/looser.hpp"
+#include "support/raised.hpp"
 #include "support/reference.hpp"
 
 #include <firtp/junction.hpp>
@@ -205,7 +205,7 @@ TEST(TightCorner, AShortBlockIsWeighedByItsPlan) {
                                                     {20.6132, 46.1469}, {0.00133642, 0.00714022});
     const PlannerParameters p = test::drawn_machine(0.00025, 1.2, {{121.422, 845.267, 54628.3}, {208.707, 773.332, 0.0},
                                                               {572.655, 7548.78, 39906.9}});
-    const std::array<Trajectory, 2> t = test::as_drawn_and_looser(p, blocks);
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
     for (const Trajectory& each : t) std::printf("corner: %s\n", describe(each.corners.at(0).bound));
     EXPECT_LE(t[1].cycle_time, t[0].cycle_time + p.period);
     EXPECT_LT(t[1].cycle_time, 0.09);
