@@ -411,7 +411,6 @@ void Lookahead::classify(std::size_t i) {
     const bool exit_smooth = i + 1 == count_ || s.kind == Kind::stop || (smooth(i) && !slower_long(i + 1, i));
     // Dense: inside one dense kernel at its feed (several blocks share a window); a longer block
     // held at one speed would crawl through its whole length behind a slow junction.
-    const Regime dense = dense_regime(dense_epsilon(i), s.u);
     // (Judged in the stage of every axis: in its own, narrower, a block leaves the window for the
     // sparse class, whose T2 is every axis' too: firtp_cliffs seed 7 program 160, 2.5x slower.)
     const Regime wide = dense_regime(dense_epsilon(i), AxisVector::Ones());
@@ -439,10 +438,10 @@ void Lookahead::classify(std::size_t i) {
         const double dense_v = dense_estimate(i), sparse_v = sparse_estimate(i);
         s.dense = dense_v > sparse_v || (dense_v == sparse_v && inside && entry_smooth && exit_smooth && !run_ends_next(i));
     }
-    s.regime = s.dense ? dense : s.own;
-    s.alpha = box(s.u, s.regime);
     s.narrowed = false;
-    if (s.dense) smooth_dense(i);
+    if (s.dense) return smooth_dense(i);
+    s.regime = s.own;
+    s.alpha = box(s.u, s.regime);
 }
 
 // The tolerance a dense block's regime keeps (classify decides its class at dense_epsilon's):

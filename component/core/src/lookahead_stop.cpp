@@ -125,11 +125,11 @@ void Lookahead::stop_if_faster(std::size_t i) {
         return;
     const double blended = pair_time(i);
     if (!std::isfinite(blended)) return;
-    const Blend blend{s.kind, s.overlap, s.overlap_tk, s.corner_cap, s.cap_bound, s.junction, s.turn_alpha, s.out_ramp, n.in_ramp};
+    const Blend blend{s.kind, s.overlap, s.corner_cap, s.cap_bound, s.junction, s.turn_alpha, s.out_ramp, n.in_ramp};
     set_stop(i, CornerBound::stop_pays);
     const double stopped = pair_time(i);
     if (std::isfinite(stopped) && stopped < blended - parameters_.period) return;
-    s.kind = blend.kind, s.overlap = blend.overlap, s.overlap_tk = blend.overlap_tk, s.corner_cap = blend.corner_cap;
+    s.kind = blend.kind, s.overlap = blend.overlap, s.corner_cap = blend.corner_cap;
     s.cap_bound = blend.cap_bound, s.junction = blend.junction, s.turn_alpha = blend.turn_alpha;
     s.out_ramp = blend.out_ramp, n.in_ramp = blend.in_ramp;
 }

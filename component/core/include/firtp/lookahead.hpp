@@ -342,7 +342,7 @@ private:
     // Whether corner i stops: both planned (lookahead_stop.cpp).
     struct Blend {  // what set_stop() changes of a junction set as a blend
         Kind kind;
-        double overlap, overlap_tk, corner_cap;
+        double overlap, corner_cap;
         CornerBound cap_bound;
         Regime junction;
         double turn_alpha;
