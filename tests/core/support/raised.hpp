@@ -1,6 +1,6 @@
 // A path planned as drawn and with a limit raised by a quarter as firtp_cliffs raises it (every
-// tolerance looser, or every axis' acceleration higher), each within its limits and tolerances
-// on the samples (case_ratios).
+// tolerance looser, or every axis' velocity or acceleration higher), each within its limits and
+// tolerances on the samples (case_ratios).
 #pragma once
 
 #include "case_ratios.hpp"
@@ -15,22 +15,24 @@
 
 namespace firtp::test {
 
-enum class Raised { tolerance, acceleration };
+enum class Raised { tolerance, velocity, acceleration };
 
 // The two trajectories: [0] as drawn, [1] raised.
 inline std::array<Trajectory, 2> as_drawn_and_raised(const PlannerParameters& drawn, const std::vector<Block>& blocks,
-                                                     Raised what = Raised::tolerance) {
+                                                     Raised what = Raised::tolerance, const AxisVector& start = AxisVector::Zero()) {
     std::array<Trajectory, 2> planned;
     for (const std::size_t raised : {0u, 1u}) {
         PlannerParameters p = drawn;
         std::vector<Block> path = blocks;
         if (raised && what == Raised::tolerance)
             for (Block& b : path) b.tolerance *= 1.25;
-        if (raised && what == Raised::acceleration)
-            for (int a = 0; a < p.limits.axes; ++a) p.limits.axis[a].max_acceleration *= 1.25;
+        for (int a = 0; raised && a < p.limits.axes; ++a) {
+            if (what == Raised::velocity) p.limits.axis[a].max_velocity *= 1.25;
+            if (what == Raised::acceleration) p.limits.axis[a].max_acceleration *= 1.25;
+        }
         SCOPED_TRACE(raised ? "raised by a quarter" : "as drawn");
-        planned[raised] = plan_trajectory(p, AxisVector::Zero(), path);
-        const CaseRatios r = case_ratios(p, path, planned[raised]);
+        planned[raised] = plan_trajectory(p, start, path);
+        const CaseRatios r = case_ratios(p, path, planned[raised], start);
         EXPECT_TRUE(r.within()) << "corner " << r.corner << " v " << r.velocity << " a " << r.acceleration << " j " << r.jerk;
         std::printf("%s: cycle %.5f s\n", raised ? "raised" : "as drawn", planned[raised].cycle_time);
     }
