@@ -111,3 +111,21 @@ TEST(DenseRun, ASpurBeforeAReversalIsNarrowedAndTheRampBeforeItKeepsItsStage) {
     std::printf("reversed at the corner %.4f s, after the 0.0001 mm spur %.4f s\n", stopped, with);
     EXPECT_LT(with, 0.16);
 }
+
+// firtp_cliffs seed 5 program 104: two blocks from rest, 0.023 and 0.010 mm, both dense at 0.10 mm.
+// The first was narrowed while it was the newest, then, once the second came, left at the whole
+// tolerance (blocks before the newest were not decided again): 0.061 s, and 0.065 s a quarter
+// looser. Decided again as the run grows (resmooth_run), both are narrowed to the run's 0.033 mm:
+// 0.048 s as drawn and looser.
+TEST(DenseRun, TheBlocksBeforeTheNewestAreDecidedAgainAsTheRunGrows) {
+    const std::vector<Block> blocks = test::drawn_blocks(
+        {{-0.0080572461636521757, 0.019764599765062681, 0.0064423734727533221, 0.0024911683726050746, 0.0044558366531087506},
+         {-0.011989420231584164, 0.028330631846778427, 0.0094525729170227106, 0.0035183814688790702, 0.0062804860278126212}},
+        {402.276, 402.276}, {0.101683, 0.101683});
+    const PlannerParameters p = test::drawn_machine(0.001, 1.0, {{52.015, 1600.4, 52963.7}, {212.989, 1095.13, 7.62646e+06},
+                                                               {144.286, 2965.02, 350994.0}, {570.192, 332.53, 1.54618e+06},
+                                                               {528.07, 839.354, 15856.1}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
+    EXPECT_LE(t[1].cycle_time, t[0].cycle_time + p.period);
+    EXPECT_LT(t[0].cycle_time, 0.055);
+}

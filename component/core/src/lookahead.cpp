@@ -98,7 +98,7 @@ Lookahead::Lookahead(const PlannerParameters& parameters, Timeline& timeline, co
 }
 
 void Lookahead::reset(const AxisVector& position) {
-    ramp_change_ = static_cast<std::size_t>(-1);
+    ramp_change_ = regime_change_ = static_cast<std::size_t>(-1);
     batch_.open = false;
     join_ = Join{};
     head_ = 0;
@@ -453,12 +453,11 @@ void Lookahead::classify(std::size_t i) {
 // (T2_d 75 -> 81 ms), now 0.064 s both. Between smooth corners the run keeps the whole: there the
 // tolerance bounds the corner it makes (a 0.0001 mm arc between two 1 mm lines of
 // ugs__Gates_combined_R12.nc, its line 1332, slowed the line before it 45 % at its length). So
-// does a run of more than run_walk blocks, and one that goes on to the newest block: the run may
-// go on beyond it, and the blocks before are not decided again (narrowed, the first blocks of a
-// 360-gon of radius 2 mm from rest kept the few they saw: 0.262 -> 0.561 s). The newest block is
-// decided again when the next one comes; till then it ends at the window's stop, and the
-// program's last block at its end (firtp_cliffs seed 99 program 105, a last block of 0.04 mm:
-// 0.338 -> 0.359 s with the accelerations a quarter higher, now 0.314 s).
+// does a run of more than run_walk blocks. A run that goes on to the newest block ends at the
+// window's stop till the next block comes, and the program's last at its end (firtp_cliffs seed 99
+// program 105, a last block of 0.04 mm: 0.338 -> 0.359 s with the accelerations a quarter higher,
+// now 0.314 s); its blocks are decided again as it grows (resmooth_run: never decided again, the
+// first blocks of a 360-gon of radius 2 mm from rest kept the few they saw, 0.262 -> 0.561 s).
 double Lookahead::run_epsilon(std::size_t i) const {
     const double epsilon = dense_epsilon(i);
     double length = seg(i).length;
@@ -468,10 +467,7 @@ double Lookahead::run_epsilon(std::size_t i) const {
         length += seg(--first).length;
     }
     while (length < epsilon) {
-        if (last + 1 == count_) {  // the window ends inside the run
-            if (last != i) return epsilon;
-            break;  // (block i, the newest, as the window's end stops it: decided again when the next comes)
-        }
+        if (last + 1 == count_) break;  // the window's end stops it: decided again when the next comes (resmooth_run)
         if (exit_is_stop(last) || !seg(last + 1).dense) break;
         if (++walked > run_walk) return epsilon;
         length += seg(++last).length;
@@ -485,6 +481,32 @@ void Lookahead::smooth_dense(std::size_t i) {
     s.narrowed = epsilon < dense_epsilon(i);
     s.regime = dense_regime(epsilon, s.u);
     s.alpha = box(s.u, s.regime);
+}
+
+// The dense run before block i: its end moved with the junction after i (run_epsilon: the window's
+// end stops a run that reaches it), so its narrowed blocks are decided again, and where the run
+// grew, they and the junctions beside them keep more tolerance now (bounds_joined goes down to
+// regime_change_). Not decided again, the blocks before the newest had to keep the whole
+// tolerance: two of 0.023 and 0.010 mm from rest at 0.10 mm took 0.061 s, and 0.065 s a quarter
+// looser; now 0.048 s both (firtp_cliffs seed 5 program 104). Never narrower: where a block beside
+// turned sparse, a sparse block between a narrowed run and a whole one took two ramp stages and
+// fitted 6 of its 14 mm/s (seed 31 program 229: +14.5 % a quarter looser).
+void Lookahead::resmooth_run(std::size_t i) {
+    if (!seg(i).dense) return;  // (the run before ends at i - 1: it may only have shrunk)
+    for (std::size_t k = i, walked = 0; k > 0 && walked <= run_walk; ++walked) {
+        if (entry_is_stop(k) || !seg(--k).dense || (k == 0 && frozen_.moving)) return;
+        Segment& s = seg(k);
+        if (!s.narrowed) continue;
+        const double epsilon = run_epsilon(k);
+        const Regime wider = dense_regime(epsilon, s.u);
+        if (!(wider.t2 > s.regime.t2)) continue;
+        s.narrowed = epsilon < dense_epsilon(k);
+        s.regime = wider;
+        s.alpha = box(s.u, s.regime);
+        junction_caps(k);
+        if (k > 0) junction_caps(k - 1);
+        regime_change_ = std::min(regime_change_, k > 0 ? k - 1 : 0);
+    }
 }
 
 void Lookahead::junction_caps(std::size_t i) {
@@ -668,6 +690,7 @@ void Lookahead::link(std::size_t i) {
     classify(i + 1);
     // (Block i's run ends where block i + 1 is not dense: known only now.)
     if (seg(i).dense && !(i == 0 && frozen_.moving)) smooth_dense(i);
+    resmooth_run(i);
     // The newest junction first: the one before weighs its stop with the plan of the block after
     // it, whose exit is this junction (lookahead_stop.cpp).
     junction_caps(i);

@@ -381,6 +381,7 @@ private:
     void classify(std::size_t i);           // dense or not, from its length and its junctions
     void smooth_dense(std::size_t i);       // dense i: its regime, at run_epsilon
     double run_epsilon(std::size_t i) const;  // ... the tolerance that keeps
+    void resmooth_run(std::size_t i);         // the run's narrowed blocks before dense i, as it grew (and regime_change_)
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i (and ramp_change_)
     void set_junction(std::size_t i);       // ... those themselves
     void set_overlap(std::size_t i);        // ... and its overlap (Segment::overlap)
@@ -651,7 +652,10 @@ private:
     // (the junctions before before - 2 were settled), then the end flags of the junction it settles
     // (settle_end_flags), then the plan from the lowest segment whose bounds changed or the
     // junction they joined on, whichever is first (joined_first; as replan()).
-    Backward bounds_joined(std::size_t before) const { return {count_, count_ - 1, before >= 2 ? before - 2 : 0, count_}; }
+    Backward bounds_joined(std::size_t before) {
+        const std::size_t low = std::min(count_ - 1, std::exchange(regime_change_, static_cast<std::size_t>(-1)));
+        return {count_, low, std::min(low, before >= 2 ? before - 2 : 0), count_};
+    }
     void settle_end_flags();
     static std::size_t joined_first(std::size_t before, std::size_t lowest);
     bool plan_joined(std::size_t before, bool undoable = false);
@@ -689,6 +693,7 @@ private:
     // The lowest segment whose ramps' regime junction_caps() changed since the last replan (its
     // legs were planned for the old one); SIZE_MAX: none.
     std::size_t ramp_change_ = static_cast<std::size_t>(-1);
+    std::size_t regime_change_ = static_cast<std::size_t>(-1);  // lowest junction a resmooth_run changed: bounds from there
     std::size_t take_ramp_change() { return std::exchange(ramp_change_, static_cast<std::size_t>(-1)); }
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
