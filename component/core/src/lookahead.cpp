@@ -3,6 +3,7 @@
 #include <firtp/dense_legs.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -660,6 +661,12 @@ void Lookahead::set_turn(Segment& s, const AxisVector& next_u) const {
 
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
+    if (std::exchange(s.sparse_as_newest, false) && !(i == 0 && frozen_.moving) && i > 0) {  // (class_if_faster)
+        s.dense = true;
+        junction_caps(i - 1);  // (a blend again: its tolerance is the regime's where block i is G61)
+        smooth_dense(i);
+        junction_caps(i - 1);
+    }
     set_turn(s, seg(i + 1).u);
     s.learned_cap = infinity;  // (what the checks learned at its old end)
     s.no_overlap = false;
@@ -694,6 +701,7 @@ void Lookahead::link(std::size_t i) {
     // The newest junction first: the one before weighs its stop with the plan of the block after
     // it, whose exit is this junction (lookahead_stop.cpp).
     junction_caps(i);
+    class_if_faster(i);
     if (i > 0) junction_caps(i - 1);
 }
 

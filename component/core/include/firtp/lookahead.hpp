@@ -136,6 +136,7 @@ private:
         bool short_block = false;  // shorter than a ramp to its feed and back
         bool dense = false;      // short between smooth junctions: one speed, changed at the junctions
         bool narrowed = false;   // dense, its regime below dense_epsilon's (run_epsilon)
+        bool sparse_as_newest = false;  // the estimates class it dense; as the newest, planned faster sparse (class_if_faster)
         bool sparse_only = false;  // a junction of it failed its check far below the block's own pace
         bool ramped_on = false;    // planned from its start (from rest or just started) to a plateau above it
         bool one_speed_start = false;  // that ramp on failed the check at its exit: it keeps its start's speed
@@ -350,7 +351,8 @@ private:
     };
     void set_stop(std::size_t i, CornerBound why);
     void stop_if_faster(std::size_t i);
-    double pair_time(std::size_t i) const;
+    double pair_time(std::size_t i, double* left = nullptr) const;  // (left: block i + 1's exit speed)
+    void class_if_faster(std::size_t i);  // the newest block i + 1, dense after sparse i: sparse where planned faster
     CornerBound stop_bound(const Segment& s) const {  // what the report says of a stop
         return s.cap_bound == CornerBound::stop_pays && !stops_whatever_follows(s) ? CornerBound::stop_pays : CornerBound::stop;
     }
