@@ -129,3 +129,17 @@ TEST(DenseRun, TheBlocksBeforeTheNewestAreDecidedAgainAsTheRunGrows) {
     EXPECT_LE(t[1].cycle_time, t[0].cycle_time + p.period);
     EXPECT_LT(t[0].cycle_time, 0.055);
 }
+
+// firtp_cliffs seed 31 program 152: 0.090 and 0.226 mm in line, from rest to the end, at 0.57
+// and 0.21 mm. No corner uses the tolerance; the run's start and stop take its stage, half the
+// run each (run_epsilon). At no more than its length it took 0.114 s, and 0.116 s a quarter
+// looser; at half its length 0.1065 s both.
+TEST(DenseRun, ARunInLineKeepsNoMoreToleranceThanHalfItsLength) {
+    const std::vector<Block> blocks = test::drawn_blocks({{0.049919047207320544, 0.074647410463950903, -0.0028420748928620547},
+                                                          {0.17518839305255213, 0.26197134393214244, -0.0099741193245870205}},
+                                                         {174.322, 174.322}, {0.566773, 0.205774});
+    const PlannerParameters p = test::drawn_machine(0.00025, 2.0, {{54.9939, 4055.13, 48966.3}, {103.607, 3256.45, 18605.8}, {109.569, 1665.85, 16666.4}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
+    EXPECT_LE(t[1].cycle_time, t[0].cycle_time + p.period);
+    EXPECT_LT(t[0].cycle_time, 0.11);
+}
