@@ -3,10 +3,10 @@
 #include <firtp/dense_legs.hpp>
 
 #include <algorithm>
-#include <utility>
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace firtp {
 
@@ -673,9 +673,12 @@ void Lookahead::set_turn(Segment& s, const AxisVector& next_u) const {
 
 void Lookahead::link(std::size_t i) {
     Segment& s = seg(i);
-    if (std::exchange(s.sparse_as_newest, false) && !(i == 0 && frozen_.moving) && i > 0) {  // (class_if_faster)
+    // Kept sparse as the newest (class_if_faster): back as the estimates left it before it is
+    // classed again. Its corner a blend first: smooth_dense reads it (a G61 block's tolerance is
+    // its entry corner's, dense_epsilon).
+    if (std::exchange(s.sparse_as_newest, false) && i > 0) {
         s.dense = true;
-        junction_caps(i - 1);  // (a blend again: its tolerance is the regime's where block i is G61)
+        junction_caps(i - 1);
         smooth_dense(i);
         junction_caps(i - 1);
     }

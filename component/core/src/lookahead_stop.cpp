@@ -156,12 +156,17 @@ double Lookahead::block_time(Fitting& f, std::size_t k, double a, double exit, d
     return legs.fits ? legs.duration() : infinity;
 }
 
+// Block i entered as fast as the corner before it allows; after a stop from rest (-1).
+double Lookahead::pair_entry(std::size_t i) const {
+    return entry_is_stop(i) ? -1.0 : std::min({seg(i - 1).corner_cap, target(i - 1), target(i)});
+}
+
 // Blocks i and i + 1 from the first's entry step to the second's exit step (command time), with
 // junction i as set: passed at its cap, no faster than block i + 1 may leave at, or a stop, the
 // two at rest between its steps (link_next_a's `rest`). infinity where a plan does not fit.
 double Lookahead::pair_time(std::size_t i, double* left) const {
     if (i == 0 && frozen_.moving) return infinity;  // (block 0 under way: its entry is frozen)
-    const double entry = entry_is_stop(i) ? -1.0 : std::min({seg(i - 1).corner_cap, target(i - 1), target(i)});
+    const double entry = pair_entry(i);
     const double exit = exit_is_stop(i + 1) ? 0.0 : std::min({seg(i + 1).corner_cap, target(i + 1), target(i + 2)});
     Fitting first(*this, i), second(*this, i + 1);
     double a0 = 0.0, b0 = 0.0, a1 = 0.0, b1 = 0.0;
@@ -194,7 +199,7 @@ void Lookahead::class_if_faster(std::size_t i) {
     Segment& s = seg(i);
     Segment& n = seg(i + 1);
     if (i + 2 != count_ || !n.dense || s.dense || s.kind != Kind::corner || (i == 0 && frozen_.moving)) return;
-    const double entry = entry_is_stop(i) ? -1.0 : std::min({seg(i - 1).corner_cap, target(i - 1), target(i)});
+    const double entry = pair_entry(i);
     const double exit = std::min({corner_exit_cap(i), target(i), target(i + 1), room_cap(i + 1, n.alpha)});
     auto width = [](const StepShape& shape) { return 0.5 * (shape.box + shape.t2); };  // (centred on its time)
     Fitting first(*this, i);

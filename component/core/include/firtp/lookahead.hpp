@@ -351,6 +351,7 @@ private:
     };
     void set_stop(std::size_t i, CornerBound why);
     void stop_if_faster(std::size_t i);
+    double pair_entry(std::size_t i) const;  // pair_time's entry speed of block i (-1: from rest)
     double pair_time(std::size_t i, double* left = nullptr) const;  // (left: block i + 1's exit speed)
     void class_if_faster(std::size_t i);  // the newest block i + 1, dense after sparse i: sparse where planned faster
     CornerBound stop_bound(const Segment& s) const {  // what the report says of a stop
