@@ -151,7 +151,8 @@ void Lookahead::pop_front(bool stop) {
     }
     head_ = (head_ + 1) % segments_.size();
     --count_;
-    if (ramp_change_ != static_cast<std::size_t>(-1) && ramp_change_ > 0) --ramp_change_;
+    for (std::size_t* change : {&ramp_change_, &regime_change_})
+        if (*change != static_cast<std::size_t>(-1) && *change > 0) --*change;
     if (join_.open) join_popped();
 }
 
