@@ -440,7 +440,7 @@ void Lookahead::classify(std::size_t i) {
         s.dense = dense_v > sparse_v || (dense_v == sparse_v && inside && entry_smooth && exit_smooth && !run_ends_next(i));
     }
     s.narrowed = false;
-    if (s.dense) return smooth_dense(i);
+    if (s.dense) return void(smooth_dense(i));
     s.regime = s.own;
     s.alpha = box(s.u, s.regime);
 }
@@ -488,12 +488,15 @@ double Lookahead::run_epsilon(std::size_t i) const {
     return std::min(epsilon, in_line ? 0.5 * length : length);
 }
 
-void Lookahead::smooth_dense(std::size_t i) {
+bool Lookahead::smooth_dense(std::size_t i, bool only_wider) {
     Segment& s = seg(i);
     const double epsilon = run_epsilon(i);
+    const Regime regime = dense_regime(epsilon, s.u);
+    if (only_wider && !(regime.t2 > s.regime.t2)) return false;
     s.narrowed = epsilon < dense_epsilon(i);
-    s.regime = dense_regime(epsilon, s.u);
+    s.regime = regime;
     s.alpha = box(s.u, s.regime);
+    return true;
 }
 
 // The dense run before block i: its end moved with the junction after i (run_epsilon: the window's
@@ -508,14 +511,7 @@ void Lookahead::resmooth_run(std::size_t i) {
     if (!seg(i).dense) return;  // (the run before ends at i - 1: it may only have shrunk)
     for (std::size_t k = i, walked = 0; k > 0 && walked <= run_walk; ++walked) {
         if (entry_is_stop(k) || !seg(--k).dense || (k == 0 && frozen_.moving)) return;
-        Segment& s = seg(k);
-        if (!s.narrowed) continue;
-        const double epsilon = run_epsilon(k);
-        const Regime wider = dense_regime(epsilon, s.u);
-        if (!(wider.t2 > s.regime.t2)) continue;
-        s.narrowed = epsilon < dense_epsilon(k);
-        s.regime = wider;
-        s.alpha = box(s.u, s.regime);
+        if (!seg(k).narrowed || !smooth_dense(k, true)) continue;
         junction_caps(k);
         if (k > 0) junction_caps(k - 1);
         regime_change_ = std::min(regime_change_, k > 0 ? k - 1 : 0);
@@ -951,7 +947,7 @@ std::size_t Lookahead::refresh_end_flags_below(std::size_t i) {
 }
 
 std::size_t Lookahead::backward(std::size_t last, std::size_t settled) {
-    Backward w{last + 1, last, settled, count_};
+    Backward w{last + 1, std::min(last, take_regime_change()), settled, count_};
     backward_some(w, static_cast<std::size_t>(-1));
     return w.changed;
 }

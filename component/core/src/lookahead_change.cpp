@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <utility>
 
 namespace firtp {
 
@@ -172,10 +171,8 @@ void Lookahead::unsplit() {
         if (i + 1 < count_) link(i);
         else classify(i);
         // The bounds before it still brake for the hold's stop: from here down (from the end, the
-        // pass found nothing changed there and stopped; a resume kept braking for 35 blocks), and
-        // at least to a block of its run that link() widened (resmooth_run).
-        Backward w{i + 1, std::min(i, std::exchange(regime_change_, static_cast<std::size_t>(-1))), 0, count_};
-        backward_some(w, static_cast<std::size_t>(-1));
+        // pass found nothing changed there and stopped; a resume kept braking for 35 blocks).
+        backward(i);
         plan_segment(i, i == 0 && frozen_.moving ? frozen_.speed : entry_for(i));  // its legs cover it whole
         return;
     }

@@ -107,9 +107,7 @@ void Lookahead::defer_beyond(std::size_t keep) {
     last.learned_cap = infinity;
     if (count_ >= 2) link(count_ - 2);
     else classify(0);
-    Backward w = bounds_joined(count_);
-    w.settled = 0;
-    backward_some(w, static_cast<std::size_t>(-1));
+    backward(count_ - 1);
 }
 
 void Lookahead::take_waiting() {

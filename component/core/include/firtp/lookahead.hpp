@@ -382,7 +382,7 @@ private:
     void link(std::size_t i);               // junction after segment i: turn, kind, caps
     void set_turn(Segment& s, const AxisVector& next_u) const;  // s.turn towards next_u, and its turn_box
     void classify(std::size_t i);           // dense or not, from its length and its junctions
-    void smooth_dense(std::size_t i);       // dense i: its regime, at run_epsilon
+    bool smooth_dense(std::size_t i, bool only_wider = false);  // dense i: its regime, at run_epsilon (true: set)
     double run_epsilon(std::size_t i) const;  // ... the tolerance that keeps
     void resmooth_run(std::size_t i);         // the run's narrowed blocks before dense i, as it grew (and regime_change_)
     void junction_caps(std::size_t i);      // regime and corner cap of the junction after i (and ramp_change_)
@@ -397,8 +397,8 @@ private:
     double room_cap(std::size_t i, double alpha) const;  // dense i: highest c with c alpha <= L/c
 
     // Passes.
-    // From `last` down while the bounds change; returns the first segment whose bounds changed
-    // (`last` at least). Below `settled` the fields are as the last pass found them (only their
+    // From `last` down while the bounds change, and at least to a junction resmooth_run changed
+    // (regime_change_); returns the first segment whose bounds changed (`last` at least). Below `settled` the fields are as the last pass found them (only their
     // flags may follow a change). The flags are final_for_start()'s alone: a segment whose flags
     // alone changed plans as before (a join of 16 chords re-planned 207 blocks behind them for a
     // flag, where 76-92 changed speed).
@@ -656,7 +656,7 @@ private:
     // (settle_end_flags), then the plan from the lowest segment whose bounds changed or the
     // junction they joined on, whichever is first (joined_first; as replan()).
     Backward bounds_joined(std::size_t before) {
-        const std::size_t low = std::min(count_ - 1, std::exchange(regime_change_, static_cast<std::size_t>(-1)));
+        const std::size_t low = std::min(count_ - 1, take_regime_change());
         return {count_, low, std::min(low, before >= 2 ? before - 2 : 0), count_};
     }
     void settle_end_flags();
@@ -698,6 +698,7 @@ private:
     std::size_t ramp_change_ = static_cast<std::size_t>(-1);
     std::size_t regime_change_ = static_cast<std::size_t>(-1);  // lowest junction a resmooth_run changed: bounds from there
     std::size_t take_ramp_change() { return std::exchange(ramp_change_, static_cast<std::size_t>(-1)); }
+    std::size_t take_regime_change() { return std::exchange(regime_change_, static_cast<std::size_t>(-1)); }
     double machine_acceleration_ = 0.0;  // |a| within the machine's limits: how far a chord of the samples may stray
     double machine_jerk_ = 0.0;          // |j| likewise (HUGE_VAL: an axis has no jerk limit)
     double hold_bound_ = 0.0;            // hold_time_bound(): a hold comes to rest within it
