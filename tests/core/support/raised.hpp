@@ -1,6 +1,6 @@
 // A path planned as drawn and with a limit raised by a quarter as firtp_cliffs raises it (every
 // tolerance looser, or every axis' velocity or acceleration higher), each within its limits and
-// tolerances on the samples (case_ratios).
+// tolerances on the samples (case_ratios), and whether the raised one is slower (expect_no_cliff).
 #pragma once
 
 #include "case_ratios.hpp"
@@ -37,6 +37,11 @@ inline std::array<Trajectory, 2> as_drawn_and_raised(const PlannerParameters& dr
         std::printf("%s: cycle %.5f s\n", raised ? "raised" : "as drawn", planned[raised].cycle_time);
     }
     return planned;
+}
+
+// No cliff: the raised plan no slower than the one as drawn, but for the tick grid (a period).
+inline void expect_no_cliff(const std::array<Trajectory, 2>& t, const PlannerParameters& drawn) {
+    EXPECT_LE(t[1].cycle_time, t[0].cycle_time + drawn.period) << "slower with the limit raised by a quarter";
 }
 
 }  // namespace firtp::test
