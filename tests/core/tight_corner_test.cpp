@@ -200,3 +200,20 @@ TEST(TightCorner, AShortBlockIsWeighedByItsPlan) {
     test::expect_no_cliff(t, p);
     EXPECT_LT(t[1].cycle_time, 0.09);
 }
+
+// The estimate keeps a sparse corner's jerk gaps at the corner's own stage. firtp_cliffs seed 1
+// program 243: a 123 degree turn between a 0.46 mm block at 8.6 mm/s and a 2.4 mm one at 24.9 mm/s,
+// its stage 24 ms (the feeds', on a machine whose widest A / J is 0.7 s). As drawn it stops
+// (0.2105 s). With the tolerance a quarter looser the estimate, its gaps at 0.7 s, found none and
+// blended at 1.48 mm/s: 0.2225 s. With the gap the blend has, it stops at both.
+TEST(TightCorner, AStopIsWeighedWithTheJerkGapsOfTheCornersStage) {
+    const std::vector<Block> blocks = test::drawn_blocks({{0.17629333088622023, 0.26280040060695742, -0.33815977524148677},
+                                                     {-2.1503588715473256, 0.28693812778076316, 0.26231158883420014}},
+                                                    {8.61602, 24.9098}, {0.00635804, 0.00635804});
+    const PlannerParameters p = test::drawn_machine(0.0005, 1.0, {{280.87, 2620.19, 1.3238e+06}, {125.963, 11700.4, 16486.6},
+                                                              {355.838, 27394.2, 38714.1}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
+    for (const Trajectory& each : t) std::printf("corner: %s\n", describe(each.corners.at(0).bound));
+    test::expect_no_cliff(t, p);
+    EXPECT_LT(t[1].cycle_time, 0.215);
+}

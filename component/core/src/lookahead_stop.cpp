@@ -60,6 +60,14 @@ double Lookahead::peak_estimate(std::size_t k, double v, double alpha) const { r
 // apart by the turn's reserves and jerk gaps (profile_legs), run at v. On the blocks' whole
 // lengths: the decision does not change while the first one runs. (Measured on a 90 degree corner
 // between 20 mm blocks at 100 mm/s, 0.05-0.5 mm: within 0.6 ms of the samples' cycle time.)
+// A sparse regime's jerk gaps at its own stage, as spacing() finds them. (At the machine's, the
+// widest A / J, a corner whose stage its blocks' feeds shorten needed none by estimate: a 123
+// degree turn between a 0.46 mm block at 8.6 mm/s and a 2.4 mm one, in a 24 ms stage on a machine
+// of 0.7 s, was estimated to lose 29.8 ms blended at 1.48 mm/s, 0.6 ms less than stopped, and lost
+// 42 ms, 12 ms more: firtp_cliffs seed 1 program 243, +5.7 % with every tolerance a quarter
+// larger, where as drawn the estimate stopped it.) A tolerance's regime (tight_pays) as before, at
+// the machine's stage: without gaps there, as spacing() has none, it was taken where it ran slower
+// (seed 3 program 60: 1.085 -> 1.106 s).
 double Lookahead::blend_loss(std::size_t i, const Regime& regime, double turn_alpha, double v) const {
     const Segment& s = seg(i);
     const Segment& n = seg(i + 1);
@@ -72,8 +80,9 @@ double Lookahead::blend_loss(std::size_t i, const Regime& regime, double turn_al
         slowest = std::min(slowest, f);
         if (v < f) loss += ((f - v) * alpha + t2) * (f - v) / (2.0 * f);
     }
-    const double before = rules_.needs_gap(-s.u, s.turn.direction) ? t2 : reserve;
-    const double after = rules_.needs_gap(s.turn.direction, n.u) ? t2 : reserve;
+    const double gap_t2 = regime.sparse ? t2 : rules_.t2;
+    const double before = rules_.needs_gap(-s.u, s.turn.direction, gap_t2) ? t2 : reserve;
+    const double after = rules_.needs_gap(s.turn.direction, n.u, gap_t2) ? t2 : reserve;
     if (v < slowest) loss += (tb + before + after - t2) * (1.0 - v / slowest);
     return loss;
 }

@@ -88,9 +88,9 @@ double spacing(const SpacingRules& rules, StepView& x, StepView& y, GapMemo* mem
 
 }  // namespace
 
-bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y) const {
+bool SpacingRules::needs_gap(const AxisVector& x, const AxisVector& y, double stage) const {
     double box_x = -1.0, box_y = -1.0;
-    return gap_between(*this, t2, x, 1.0, box_x, y, 1.0, box_y);
+    return gap_between(*this, stage, x, 1.0, box_x, y, 1.0, box_y);
 }
 
 double SpacingRules::unit_box(const AxisVector& d) const { return firtp::unit_box(limits, d); }

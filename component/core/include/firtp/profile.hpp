@@ -48,9 +48,10 @@ struct SpacingRules {
     // with different jerk stages do not share the moving average: their kernels stay apart. Always
     // at least half the difference of their widths: kernels start in the steps' order.
     double spacing(const StepShape& x, const StepShape& y) const;
-    // True when boxes in directions x and y need a jerk gap of T2 between them (opposite signs on
-    // an axis whose accelerations at the limit would swing by more than J T2).
-    bool needs_gap(const AxisVector& x, const AxisVector& y) const;
+    // True when boxes in directions x and y, steps of jerk stage `stage`, need a jerk gap of that
+    // stage between them (opposite signs on an axis whose accelerations at the limit would swing
+    // by more than J times it), as spacing() finds it.
+    bool needs_gap(const AxisVector& x, const AxisVector& y, double stage) const;
     // T1 per unit of a step in direction d, max_a |d_a| / A_a (the same for -d): the box heights
     // the jerk gaps compare are |d_a| / that.
     double unit_box(const AxisVector& d) const;
