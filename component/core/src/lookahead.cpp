@@ -441,8 +441,7 @@ void Lookahead::classify(std::size_t i) {
     }
     s.narrowed = false;
     if (s.dense) return void(smooth_dense(i));
-    s.regime = s.own;
-    s.alpha = box(s.u, s.regime);
+    set_regime(s, s.own);
 }
 
 // The tolerance a dense block's regime keeps (classify decides its class at dense_epsilon's):
@@ -494,8 +493,7 @@ bool Lookahead::smooth_dense(std::size_t i, bool only_wider) {
     const Regime regime = dense_regime(epsilon, s.u);
     if (only_wider && !(regime.t2 > s.regime.t2)) return false;
     s.narrowed = epsilon < dense_epsilon(i);
-    s.regime = regime;
-    s.alpha = box(s.u, s.regime);
+    set_regime(s, regime);
     return true;
 }
 
@@ -1205,8 +1203,7 @@ void Lookahead::arrive(Segment& s) const {
         if (limits_.axis[a].max_jerk > 0.0) s.u_jerk = std::max(s.u_jerk, std::abs(s.u[a]) / limits_.axis[a].max_jerk);
     s.feed_t2 = feed_stage(s);
     s.own = own_regime(s);
-    s.regime = s.own;
-    s.alpha = box(s.u, s.regime);
+    set_regime(s, s.own);
     // (Short against the stage its corners take, at least its axes', not its own.)
     s.short_block = s.length < s.feed_max * (s.feed_max * s.alpha + corner_regime(s, s).t2);
     s.kind = Kind::stop;

@@ -218,15 +218,13 @@ void Lookahead::class_if_faster(std::size_t i) {
     const Regime regime = n.regime;
     const bool narrowed = n.narrowed;
     n.dense = n.narrowed = false;
-    n.regime = n.own;
-    n.alpha = box(n.u, n.regime);
+    set_regime(n, n.own);
     junction_caps(i);
     double left = 0.0;
     const double sparse = pair_time(i, &left) + width(exit_shape(i + 1, left));
     if (sparse < dense - parameters_.period) return void(n.sparse_as_newest = true);
     n.dense = true, n.narrowed = narrowed;
-    n.regime = regime;
-    n.alpha = box(n.u, n.regime);
+    set_regime(n, regime);
     junction_caps(i);
 }
 

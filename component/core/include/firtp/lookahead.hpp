@@ -306,6 +306,7 @@ private:
     double feed_stage(const Segment& s) const;
     double reach_stage(const Segment& s, double length) const;  // feed_stage() as if s were `length` long
     Regime capped(Regime r, double t2) const;  // r in a stage of at most t2, every box within J t2
+    void set_regime(Segment& s, const Regime& r) const { s.regime = r, s.alpha = box(s.u, r); }  // and its alpha
     static Regime stretched(Regime r, double t2) {  // r's boxes in a longer stage
         r.t2 = t2;
         return r;
