@@ -42,10 +42,11 @@ std::vector<AxisState> added_one_by_one(const PlannerParameters& p, const std::v
 }
 
 // Random programs that fit the window, so plan_trajectory adds each as one batch; of the 1,000 of
-// seeds 1-10 these three are among the 21 whose batch was undone. (Seed 1 program 27 was one until
-// a dense run's jerk stage came from the axes moving in it.)
+// seeds 1-10 these three are among the 7 whose batch was undone. (Seed 1 program 27 was one until
+// a dense run's jerk stage came from the axes moving in it; seed 1 program 38 and seed 2 program
+// 44 until a failure of a leg's kernel order turned the dense blocks beside it sparse.)
 TEST(BatchPlanning, AnUndoneBatchGivesTheSamplesOfItsBlocksAddedOneByOne) {
-    for (const auto& [seed, program] : {std::pair{1, 38}, std::pair{1, 42}, std::pair{2, 44}}) {
+    for (const auto& [seed, program] : {std::pair{1, 42}, std::pair{2, 6}, std::pair{4, 23}}) {
         const test::RandomCase c = random_case(seed, program);
         ASSERT_LT(c.blocks.size(), c.parameters.queue_capacity);
         const Trajectory batch = plan_trajectory(c.parameters, AxisVector::Zero(), c.blocks);

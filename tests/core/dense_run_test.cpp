@@ -143,3 +143,21 @@ TEST(DenseRun, ARunInLineKeepsNoMoreToleranceThanHalfItsLength) {
     test::expect_no_cliff(t, p);
     EXPECT_LT(t[0].cycle_time, 0.11);
 }
+
+// A check failing on the order of a leg's kernels (a dense junction's wide stage would start
+// falling before the short block's start rose) turns the dense blocks beside it sparse at the
+// corner's speed. firtp_cliffs seed 2 program 151: a 1.47 mm block from rest in line with a
+// 9.18 mm one, the fourth axis' A / J 52 ms. With the accelerations a quarter higher the run's
+// stage grew to 123 ms and the order failed; the corner was lowered 0.9x first, and the second
+// block turned sparse all the same: 0.1708 -> 0.1817 s. Now 0.1695 s.
+TEST(DenseRun, AKernelOrderFailureTurnsTheRunSparseAtItsSpeed) {
+    const std::vector<Block> blocks = test::drawn_blocks(
+        {{-0.78032478693782215, 1.0578219135107367, -0.65178874952471744, 0.093693865229289741},
+         {-5.6549929680165789, 7.6660072606327629, -4.7234957249772638, 0.67899694830550761}},
+        {460.108, 295.961}, {0.00112592, 0.794815});
+    const PlannerParameters p = test::drawn_machine(0.00025, 1.2, {{250.112, 22989.6, 1.53529e+07}, {292.789, 8165.63, 2.54263e+07},
+                                                                  {128.782, 25384.2, 5.87127e+06}, {199.701, 527.759, 10215.7}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks, test::Raised::acceleration);
+    test::expect_no_cliff(t, p);
+    EXPECT_LT(t[1].cycle_time, 0.172);
+}

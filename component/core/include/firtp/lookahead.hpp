@@ -557,6 +557,9 @@ private:
     bool replan_begin(std::size_t first, Replan& r);
     void replan_forward(Replan& r);
     Remedy replan_failed(Replan& r, std::size_t bad, bool undoable);
+    // The dense blocks beside junction `bad` whose sparse estimate is more than twice `cap` ramp
+    // on their own (sparse_only); false if there was none.
+    bool sparse_beside(std::size_t bad, double cap);
     bool replan_run(Replan& r, bool undoable);  // from a forward pass on, to the end
     void replan_passed(const Replan& r);
     void replan_end(std::size_t from);
@@ -715,6 +718,7 @@ private:
     mutable double next_start_ = 0.0;  // the next step's kernel start, s on the timeline's clock
     double excess_ = 0.0;              // the last failed corner's error / tolerance (0: a limit failed)
     LimitCheck limit_failure_;          // the last check's limit sweep (ok: it passed, or looked no further)
+    bool order_failure_ = false;        // the last check failed on the order of a leg's kernels (check_begin)
     double pending_dwell_ = 0.0;       // dwell of skipped zero-length blocks: the next block's
 
     std::size_t capacity_;           // blocks add() takes
