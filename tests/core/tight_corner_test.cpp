@@ -217,3 +217,23 @@ TEST(TightCorner, AStopIsWeighedWithTheJerkGapsOfTheCornersStage) {
     test::expect_no_cliff(t, p);
     EXPECT_LT(t[1].cycle_time, 0.215);
 }
+
+// A long block's ramp next to a sparse corner takes that corner's stage, not the longer stage of
+// the corner at its other end: it shares the first corner's moving average instead of keeping its
+// kernel apart from it (lookahead.hpp, sparse_ramp). firtp_cliffs seed 1 program 70: a 15.7 mm
+// block between corners of 77 and 49 degrees, then 32 and 15 mm blocks and a stop at 107
+// degrees. As drawn 1.1125 s; with the tolerance a quarter looser the 15.7 mm block's ramps both
+// took the longer stage: 1.1190 s. Now 1.1100 s.
+TEST(TightCorner, ALongBlocksRampTakesTheStageOfTheCornerBesideIt) {
+    const std::vector<Block> blocks = test::drawn_blocks({{-0.69727579685099095, 1.3607395241991906},
+                                                          {11.269003477916753, 11.525054804920348},
+                                                          {43.135649620429078, 6.5067875795579617},
+                                                          {36.617493084786318, -7.1592225054990539},
+                                                          {36.563319122346108, -7.2597623714533928}},
+                                                         {204.52, 38.5689, 82.0479, 82.0479, 82.0479},
+                                                         {0.099887, 0.099887, 0.099887, 0.099887, 0.099887});
+    const PlannerParameters p = test::drawn_machine(0.0005, 1.0, {{79.5297, 7663.22, 7.38099e+07}, {159.148, 19731.5, 227380}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
+    test::expect_no_cliff(t, p);
+    EXPECT_LT(t[1].cycle_time, 1.1125);
+}

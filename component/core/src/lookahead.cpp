@@ -328,7 +328,7 @@ double Lookahead::sparse_estimate(std::size_t i) const {
     const double v0 = std::min(in, std::sqrt(out * out + reach)), v1 = std::min(out, std::sqrt(v0 * v0 + reach));
     const double peak = std::min(s.feed_max, std::sqrt(0.5 * (reach + v0 * v0 + v1 * v1)));
     // The jerk stage each end's step adds beyond its box: at a corner, the corner's stage (the
-    // ramps beside it share it: sparse_ramps; beside a dense block, corner_regime's longer one);
+    // ramps beside it share it: sparse_ramp; beside a dense block, corner_regime's longer one);
     // at a start or stop sized to itself, its own, from the peak (far below T2 where the peak is
     // slow: seed 7 program 260, a 0.05 mm G61 block on an axis with T2 = 93 ms, estimated at T2
     // and classified dense: +245 % with every tolerance a quarter larger). (On arrival the next
@@ -918,20 +918,26 @@ bool Lookahead::settled(std::size_t i) const {
     return end_known() || i + 2 < count_ || s.exact_stop || (i + 1 < count_ && stops_whatever_follows(s));
 }
 
+// A bound the window's end limits may rise as blocks come; it may also fall while the junction
+// after its block is not settled: that junction's regime may lengthen the block's ramp down. So a
+// block entered at its feed, or faster than the corner before it passes, still waits for its exit
+// junction. (Block 2 of Arrival's seed 1 program 37 entered at its feed, 49.7 mm/s, until the
+// next block came and the junction after it took a 91 ms stage: 28.3 mm/s. The start before it,
+// frozen at 44.19 mm/s when fed one block a period, takes 43.77 known at once.)
 bool Lookahead::exit_end(std::size_t i) const {
     const Segment& s = seg(i);
     if (i + 1 == count_) return !end_known() && !s.exact_stop;  // an exact stop is its own, not the end's
     if (!settled(i)) return true;                              // its junction's regime may change
     if (s.kind == Kind::stop) return false;
     const Segment& n = seg(i + 1);
-    if (s.kind == Kind::corner) return n.entry_max < corner_exit_cap(i) && n.entry_end_limited;
+    if (s.kind == Kind::corner) return n.entry_end_limited && (n.entry_max < corner_exit_cap(i) || !settled(i + 1));
     return n.entry_end_limited;
 }
 
 bool Lookahead::refresh_end_flags(std::size_t i) {
     Segment& s = seg(i);
     const bool exit = exit_end(i);
-    const bool entry = exit && s.entry_max < s.feed_max * (1.0 - 1e-12);
+    const bool entry = exit && (s.entry_max < s.feed_max * (1.0 - 1e-12) || !settled(i));
     const bool changed = exit != s.exit_end_limited || entry != s.entry_end_limited;
     s.exit_end_limited = exit;
     s.entry_end_limited = entry;

@@ -108,7 +108,7 @@ private:
     // axis that does not move leaves them alone (sparse_regime); a block's own steps in no longer
     // a stage than their acceleration along it needs, and no stage longer than its feed's (every
     // box within J T2: own_regime, corner_regime, feed_stage). The ramps beside a sparse corner
-    // take the corner's stage where it is longer (sparse_ramps), so they share its moving
+    // take the corner's stage where it is longer (sparse_ramp), so they share its moving
     // average. A dense run (dense.hpp) uses T2_d = 2 h / J with h = min(A, cbrt(3 eps J^2)) (eps:
     // run_epsilon's: no more than a short run next to a stop is long), the largest over the axes
     // moving in it (the others' boxes held to J T2_d / 2): the run's accelerations may then swing
@@ -319,16 +319,21 @@ private:
     double box(const AxisVector& dv, const Regime& regime) const;  // max_a |dv_a| / cap_a
     Step make_step(const AxisVector& dv, const Regime& regime) const;
     Step ramp_step(std::size_t i, double dv) const;  // along segment i, in its regime
-    Regime in_ramp_regime(std::size_t i) const { return shares(seg(i).in_ramp) ? ramp_on_block(i, seg(i).in_ramp) : sparse_ramps(i); }
-    Regime out_ramp_regime(std::size_t i) const { return shares(seg(i).out_ramp) ? ramp_on_block(i, seg(i).out_ramp) : sparse_ramps(i); }
+    Regime in_ramp_regime(std::size_t i) const { return shares(seg(i).in_ramp) ? ramp_on_block(i, seg(i).in_ramp) : sparse_ramp(i, seg(i).in_ramp); }
+    Regime out_ramp_regime(std::size_t i) const { return shares(seg(i).out_ramp) ? ramp_on_block(i, seg(i).out_ramp) : sparse_ramp(i, seg(i).out_ramp); }
     static bool shares(const Regime& ramp) { return ramp.t2 >= 0.0 && !ramp.sparse; }  // a dense run's regime
-    // A block's ramps outside a dense run's regime: its own boxes, in the longest sparse corner
-    // stage beside it (set_junction), or in its own.
-    Regime sparse_ramps(std::size_t i) const {
+    // A block's ramp outside a dense run's regime, next to the junction whose ramp regime is
+    // `end`: its own boxes, in that junction's sparse corner stage where it is longer than its own
+    // (set_junction), so the two share a moving average. A short block's two ramps lie side by
+    // side: both take the longer of its corners' stages. (A long block's both did too: its ramp
+    // up from a corner of 48 ms, in the 54 ms of the corner it ramps down into, kept its kernel
+    // 36 ms apart from the first corner's: firtp_cliffs seed 3 program 255, blended at a quarter
+    // looser tolerance, 0.834 -> 0.867 s; now 0.834 -> 0.839 s.)
+    Regime sparse_ramp(std::size_t i, const Regime& end) const {
         const Segment& s = seg(i);
         double t2 = s.regime.t2;
         for (const Regime* r : {&s.in_ramp, &s.out_ramp})
-            if (r->t2 >= 0.0 && r->sparse) t2 = std::max(t2, r->t2);
+            if ((s.short_block || r == &end) && r->t2 >= 0.0 && r->sparse) t2 = std::max(t2, r->t2);
         return stretched(s.regime, t2);
     }
     // A ramp on block i sharing a corner's regime; where the block shares the corners at both its
