@@ -331,10 +331,9 @@ private:
     // looser tolerance, 0.834 -> 0.867 s; now 0.834 -> 0.839 s.)
     Regime sparse_ramp(std::size_t i, const Regime& end) const {
         const Segment& s = seg(i);
-        double t2 = s.regime.t2;
-        for (const Regime* r : {&s.in_ramp, &s.out_ramp})
-            if ((s.short_block || r == &end) && r->t2 >= 0.0 && r->sparse) t2 = std::max(t2, r->t2);
-        return stretched(s.regime, t2);
+        auto longer = [](double t2, const Regime& r) { return r.t2 >= 0.0 && r.sparse ? std::max(t2, r.t2) : t2; };
+        const double t2 = longer(s.regime.t2, end);
+        return stretched(s.regime, s.short_block ? longer(longer(t2, s.in_ramp), s.out_ramp) : t2);
     }
     // A ramp on block i sharing a corner's regime; where the block shares the corners at both its
     // ends, each ramp's boxes up to J T2 / 2 (up from one corner and down into the next within T2).
