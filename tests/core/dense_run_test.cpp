@@ -161,3 +161,22 @@ TEST(DenseRun, AKernelOrderFailureTurnsTheRunSparseAtItsSpeed) {
     test::expect_no_cliff(t, p);
     EXPECT_LT(t[1].cycle_time, 0.172);
 }
+
+// A dense block's estimate sees the speed its tiny dense neighbour next to a stop leaves it: the
+// junction's step from the neighbour's speed shares the neighbour's one leg with its start
+// (lookahead.cpp, dense_estimate). firtp_cliffs seed 2 program 161: an 18.9 mm block in line
+// after a 0.071 mm one from rest, on a machine whose Y axis has a 0.67 s stage (A / J), so the
+// long block is short against it. Dense, it was held at 9.3 mm/s, twice the short block's speed,
+// and took 2.108 s. Sparse it ramps up on its own: 0.368 s.
+TEST(DenseRun, ALongBlockIsNotHeldToWhatATinyNeighboursStartLeavesIt) {
+    const std::vector<Block> blocks = test::drawn_blocks(
+        {{0.026663934970746574, -0.05884242142498592, 0.013678588119042746, -0.025321414148893558, 0.0099726755066048226},
+         {7.0990239292441961, -15.666245743883556, 3.6417964745974238, -6.7415902852490666, 2.6551318152270782}},
+        {255.693, 176.218}, {0.0177418, 0.0177418});
+    const PlannerParameters p = test::drawn_machine(0.001, 2.0, {{227.611, 1329.99, 1.16309e+07}, {481.345, 11390.5, 16992.4},
+                                                                {481.293, 595.091, 1.91611e+07}, {418.546, 1232.25, 0.0},
+                                                                {64.6877, 2858.2, 2.37427e+06}});
+    const std::array<Trajectory, 2> t = test::as_drawn_and_raised(p, blocks);
+    test::expect_no_cliff(t, p);
+    EXPECT_LT(t[0].cycle_time, 0.5);
+}

@@ -100,6 +100,9 @@ private:
     static constexpr double check_margin = 1e-6, plan_margin = 2e-6;
     // run_epsilon: a dense run longer than this many blocks keeps the whole tolerance.
     static constexpr std::size_t run_walk = 8;
+    // dense_estimate: a block this many times as long as its dense neighbour next to a stop is
+    // held to the speed that neighbour's leg leaves its junction step.
+    static constexpr double dense_neighbour_ratio = 20.0;
     enum class Kind : std::uint8_t { stop, corner, dense };
 
     // How a step is smoothed: the jerk stage T2 and, per axis, the acceleration its box may
